@@ -1,0 +1,12 @@
+// The CLI's subcommands: each file registers one on the app. No algorithm code here — only
+// option parsing, library calls and file writing.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace ramus::cli {
+
+void addLsystemCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
+
+}  // namespace ramus::cli

@@ -1,0 +1,23 @@
+# Dependencies come from Debian -dev packages (installed by `make deps`), never downloaded.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(CLI11 2.1 REQUIRED)
+if(RAMUS_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(RAMUS_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
+
+# stb (header-only, Debian libstb-dev puts headers in /usr/include/stb)
+find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb REQUIRED)
+add_library(ramus_stb INTERFACE)
+target_include_directories(ramus_stb SYSTEM INTERFACE ${STB_INCLUDE_DIR})
+add_library(ramus::stb ALIAS ramus_stb)
+
+# tinygltf (header-only in Debian's libtinygltf-dev), used to read glTF files back
+find_path(TINYGLTF_INCLUDE_DIR tiny_gltf.h REQUIRED)
+add_library(ramus_tinygltf INTERFACE)
+target_include_directories(ramus_tinygltf SYSTEM INTERFACE ${TINYGLTF_INCLUDE_DIR})
+target_link_libraries(ramus_tinygltf INTERFACE nlohmann_json::nlohmann_json)
+add_library(ramus::tinygltf ALIAS ramus_tinygltf)

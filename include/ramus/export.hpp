@@ -1,0 +1,29 @@
+// Writing and reading scenes: glTF 2.0 binary (.glb) and Wavefront OBJ + MTL.
+#pragma once
+
+#include <string>
+
+#include "ramus/scene.hpp"
+
+namespace ramus {
+
+/// Serialises `scene` as a GLB (glTF 2.0 binary). Byte-identical for identical scenes.
+/// Output passes the Khronos glTF validator with no errors.
+std::string encodeGlb(const Scene& scene);
+
+/// Writes a GLB atomically (temp file + rename).
+void writeGlb(const Scene& scene, const std::string& path);
+
+/// Writes `path` (.obj) and the material library next to it (same stem, .mtl), both
+/// atomically. Nodes' transforms are applied to the vertices; one `o`/`g` group per node.
+void writeObj(const Scene& scene, const std::string& path);
+
+/// Writes .glb or .obj depending on the extension of `path` (case-insensitive); anything else
+/// is an Error naming the extension and the supported ones.
+void writeScene(const Scene& scene, const std::string& path);
+
+/// Reads a GLB or glTF file into a Scene (meshes with positions/normals/indices and the node
+/// hierarchy). Throws Error naming the file on malformed input.
+Scene readGltf(const std::string& path);
+
+}  // namespace ramus

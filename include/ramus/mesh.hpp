@@ -1,0 +1,51 @@
+// Triangle meshes as flat arrays, ready for glTF/OBJ export and preview rendering.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ramus/math.hpp"
+
+namespace ramus {
+
+/// A PBR metallic-roughness material (maps 1:1 to glTF's; OBJ export writes Kd from baseColor).
+struct Material {
+    std::string name = "material";
+    Vec4f baseColor{0.8f, 0.8f, 0.8f, 1.0f};  ///< linear RGBA
+    float metallic = 0.0f;
+    float roughness = 0.9f;
+    bool doubleSided = false;
+};
+
+/// A range of the index buffer drawn with one material (glTF primitive / OBJ usemtl group).
+struct MeshPrimitive {
+    std::uint32_t firstIndex = 0;  ///< into Mesh::indices, multiple of 3
+    std::uint32_t indexCount = 0;  ///< multiple of 3
+    std::uint32_t material = 0;    ///< index into Mesh::materials
+    std::string name;              ///< e.g. "bark", "leaves"
+};
+
+/// Indexed triangle mesh. positions is always filled; normals, tangents and uvs are either
+/// empty or the same length as positions. Triangles are counter-clockwise seen from outside.
+/// tangents are glTF tangents: xyz unit tangent, w = ±1 bitangent sign.
+struct Mesh {
+    std::string name = "mesh";
+    std::vector<Vec3f> positions;
+    std::vector<Vec3f> normals;
+    std::vector<Vec4f> tangents;
+    std::vector<Vec2f> uvs;
+    std::vector<std::uint32_t> indices;
+    std::vector<MeshPrimitive> primitives;  ///< cover indices; empty = one primitive, material 0
+    std::vector<Material> materials;
+
+    std::size_t vertexCount() const { return positions.size(); }
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    Aabb bounds() const;
+};
+
+/// Appends `other` to `mesh` (indices, primitives and materials re-based). Attribute arrays
+/// that one side lacks are dropped from the result unless both have them.
+void appendMesh(Mesh& mesh, const Mesh& other);
+
+}  // namespace ramus

@@ -1,0 +1,52 @@
+#include "ramus/file_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "ramus/error.hpp"
+
+namespace ramus {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratchDir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / ("ramus_test_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(FileUtil, WriteThenReadRoundTripsAndLeavesNoTempFile) {
+    const fs::path dir = scratchDir("roundtrip");
+    const std::string path = (dir / "a.bin").string();
+    writeFileAtomic(path, std::string("he\0llo", 6));
+    EXPECT_EQ(readFile(path), std::string("he\0llo", 6));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST(FileUtil, FailedWriteKeepsTheOldFileAndLeavesNothingBehind) {
+    const fs::path dir = scratchDir("failed");
+    const std::string path = (dir / "missing_dir" / "a.bin").string();
+    EXPECT_THROW(writeFileAtomic(path, "x"), Error);
+    EXPECT_FALSE(fs::exists(dir / "missing_dir"));
+}
+
+TEST(FileUtil, ReadingAMissingFileNamesIt) {
+    try {
+        readFile("/nonexistent/ramus.lsys");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/ramus.lsys"), std::string::npos);
+    }
+}
+
+TEST(Error, MessageStartsWithFileLineAndColumn) {
+    const Error e(SourceLoc{"tree.lsys", 3, 14}, "unknown symbol 'Q'; expected a module");
+    EXPECT_STREQ(e.what(), "tree.lsys:3:14: unknown symbol 'Q'; expected a module");
+    EXPECT_EQ(e.loc().line, 3);
+}
+
+}  // namespace
+}  // namespace ramus
