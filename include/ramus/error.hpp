@@ -37,8 +37,8 @@ private:
 /// Internal invariant check: active in Debug builds and tests (RAMUS_ENABLE_ASSERTS), compiled
 /// out in Release. Never used for validating user input (throw ramus::Error for that).
 #if defined(RAMUS_ENABLE_ASSERTS)
-#define RAMUS_ASSERT(cond)                                                   \
-    do {                                                                     \
+#define RAMUS_ASSERT(cond)                                                     \
+    do {                                                                       \
         if (!(cond)) ::ramus::detail::assertFailed(#cond, __FILE__, __LINE__); \
     } while (0)
 namespace ramus::detail {

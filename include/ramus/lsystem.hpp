@@ -46,14 +46,14 @@ enum class TropismMode {
 
 /// Header settings of a .lsys file (names as in the file).
 struct LSystemSettings {
-    int derivations = 1;         ///< `derivations:`  (≥ 0)
-    double angleDegrees = 90.0;  ///< `angle:` default for + - & ^ \ / without argument
-    double step = 1.0;           ///< `step:` default length for F and f without argument
-    std::uint64_t seed = 0;      ///< `seed:` for stochastic rules and rand()
-    Vec3 tropism = Vec3::Zero(); ///< `tropism: x y z e` — T in world coordinates (Y up)
-    double susceptibility = 0.0; ///< e of `tropism:`; 0 = no tropism
+    int derivations = 1;          ///< `derivations:`  (≥ 0)
+    double angleDegrees = 90.0;   ///< `angle:` default for + - & ^ \ / without argument
+    double step = 1.0;            ///< `step:` default length for F and f without argument
+    std::uint64_t seed = 0;       ///< `seed:` for stochastic rules and rand()
+    Vec3 tropism = Vec3::Zero();  ///< `tropism: x y z e` — T in world coordinates (Y up)
+    double susceptibility = 0.0;  ///< e of `tropism:`; 0 = no tropism
     TropismMode tropismMode = TropismMode::Rotate;  ///< `tropism_mode: rotate|blend`
-    double width = 0.0;          ///< `width:` initial turtle width for `!`; 0 = unset
+    double width = 0.0;  ///< `width:` initial turtle width for `!`; 0 = unset
 };
 
 namespace detail {
@@ -88,8 +88,8 @@ LSystem loadLSystem(const std::string& path, const ParseOptions& options = {});
 struct DeriveOptions {
     int derivations = -1;  ///< -1 = use LSystemSettings::derivations
     bool overrideSeed = false;
-    std::uint64_t seed = 0;                      ///< used when overrideSeed
-    std::size_t maxModules = 50'000'000;         ///< stop with Error when a word would exceed it
+    std::uint64_t seed = 0;               ///< used when overrideSeed
+    std::size_t maxModules = 50'000'000;  ///< stop with Error when a word would exceed it
 };
 
 /// Derives the word after n parallel rewriting steps (0 steps = the axiom). Deterministic for

@@ -13,7 +13,8 @@ std::uint64_t hashCombine(std::uint64_t a, std::uint64_t b);
 class Rng {
 public:
     /// Generator for a seed and a stream selector (any two values give independent sequences).
-    explicit Rng(std::uint64_t seed = 0x853c49e6748fea9bULL, std::uint64_t stream = 0xda3e39cb94b95bdbULL);
+    explicit Rng(std::uint64_t seed = 0x853c49e6748fea9bULL,
+                 std::uint64_t stream = 0xda3e39cb94b95bdbULL);
 
     /// Independent generator for entity `id` under `seed`: hash(seed, id) picks seed and stream,
     /// so results do not depend on the order entities are processed in.

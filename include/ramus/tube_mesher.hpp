@@ -47,7 +47,7 @@ Mesh buildTubeMesh(const BranchTree& tree, const TubeMeshParams& params = {});
 /// side) into a mesh with one primitive "leaves" using `material`. Polygons with fewer than 3
 /// vertices are skipped. Layout as TurtleResult: offsets has polygonCount + 1 entries.
 Mesh buildPolygonMesh(std::span<const Vec3> vertices, std::span<const std::uint32_t> offsets,
-                      const Material& material = {"leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f,
-                                                  0.8f, true});
+                      const Material& material = {
+                          "leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f, 0.8f, true});
 
 }  // namespace ramus

@@ -52,8 +52,7 @@ Aabb BranchTree::bounds() const {
     return box;
 }
 
-std::vector<double> computeMurrayRadii(const BranchTree& tree, double leafRadius,
-                                       double exponent) {
+std::vector<double> computeMurrayRadii(const BranchTree& tree, double leafRadius, double exponent) {
     const std::size_t n = tree.size();
     std::vector<double> sumPow(n, 0.0);
     std::vector<double> radius(n, leafRadius);

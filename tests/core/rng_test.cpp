@@ -11,8 +11,8 @@ namespace {
 TEST(Rng, MatchesThePcg32ReferenceSequence) {
     // pcg32-demo (pcg-c-basic): pcg32_srandom_r(&rng, 42u, 54u) prints these first values.
     Rng rng(42u, 54u);
-    const std::uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330, 0x83d2f293,
-                                      0xbfa4784b, 0xcbed606e};
+    const std::uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330,
+                                      0x83d2f293, 0xbfa4784b, 0xcbed606e};
     for (std::uint32_t e : expected) EXPECT_EQ(rng.nextU32(), e);
 }
 
