@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "ramus/branch_tree.hpp"
 #include "ramus/mesh.hpp"
@@ -37,6 +38,11 @@ struct TubeMeshParams {
     double uvAspect = 1.0;
     Material material{"bark", {0.42f, 0.30f, 0.20f, 1.0f}, 0.0f, 0.95f, false};
 };
+
+/// The radius of the edge ending at each node, exactly as buildTubeMesh uses it (radius mode,
+/// automatic leaf radius, inheritance of `!` widths); the root's entry is its end radius
+/// (before trunkMultiplier). Indexed by node id; empty tree → empty vector.
+std::vector<double> computeEdgeRadii(const BranchTree& tree, const TubeMeshParams& params = {});
 
 /// Meshes `tree` into tubes. Every edge not marked hidden gets a tube piece; output has
 /// positions, unit normals, tangents (w = +1), uvs, one primitive "bark". Empty tree or a tree

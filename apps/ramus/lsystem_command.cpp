@@ -1,0 +1,146 @@
+// `ramus lsystem FILE.lsys …`: derive, interpret, mesh, write.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "ramus/error.hpp"
+#include "ramus/lsystem.hpp"
+#include "ramus/tube_mesher.hpp"
+#include "ramus/turtle.hpp"
+#include "tree_output.hpp"
+
+namespace ramus::cli {
+
+namespace {
+
+struct LsystemOptions {
+    std::string file;
+    int derivations = -1;
+    std::vector<std::string> seed;  // 0 or 1 value; a vector tells "absent" from "0"
+    std::vector<std::string> sets;
+    std::size_t maxModules = 50'000'000;
+    std::string tropismMode;
+    bool print = false;
+    bool stats = false;
+    TreeOutputs outputs;
+    TubeMeshParams mesh;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// "NAME=VALUE" → pair; the value must be a plain number.
+std::pair<std::string, double> parseSetting(const std::string& text) {
+    const std::size_t eq = text.find('=');
+    std::size_t used = 0;
+    double value = 0;
+    if (eq != std::string::npos && eq > 0) {
+        try {
+            value = std::stod(text.substr(eq + 1), &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+    }
+    if (eq == std::string::npos || eq == 0 || used == 0 || used != text.size() - eq - 1) {
+        throw Error("--set: invalid setting '" + text + "'; expected NAME=NUMBER, e.g. a=30");
+    }
+    return {text.substr(0, eq), value};
+}
+
+std::uint64_t parseSeed(const std::string& text) {
+    std::size_t used = 0;
+    unsigned long long value = 0;
+    try {
+        value = std::stoull(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || text[0] == '-') {
+        throw Error("--seed: invalid seed '" + text + "'; expected a non-negative integer");
+    }
+    return value;
+}
+
+void run(LsystemOptions& o) {
+    ParseOptions parseOptions;
+    for (const std::string& s : o.sets) parseOptions.constantOverrides.push_back(parseSetting(s));
+    DeriveOptions deriveOptions;
+    deriveOptions.derivations = o.derivations;
+    deriveOptions.maxModules = o.maxModules;
+    if (!o.seed.empty()) {
+        deriveOptions.overrideSeed = true;
+        deriveOptions.seed = parseSeed(o.seed.front());
+    }
+    const LSystem system = loadLSystem(o.file, parseOptions);
+    TurtleParams turtle = turtleParamsFrom(system.settings);
+    if (o.tropismMode == "blend") turtle.tropismMode = TropismMode::Blend;
+    if (o.tropismMode == "rotate") turtle.tropismMode = TropismMode::Rotate;
+
+    if (!o.print && !o.stats && !o.outputs.any()) {
+        o.outputs.model = std::filesystem::path(o.file).stem().string() + ".glb";
+        std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());
+    }
+
+    auto start = std::chrono::steady_clock::now();
+    const ModuleString word = deriveLSystem(system, deriveOptions);
+    const double deriveSeconds = secondsSince(start);
+    if (o.print) std::printf("%s\n", formatModules(system.symbols, word).c_str());
+
+    start = std::chrono::steady_clock::now();
+    const TurtleResult shape = interpretTurtle(word, system.symbols, turtle);
+    const double interpretSeconds = secondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    Mesh mesh = buildTubeMesh(shape.tree, o.mesh);
+    if (shape.polygonCount() > 0) {
+        appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
+    }
+    const double meshSeconds = secondsSince(start);
+
+    writeTreeOutputs(o.outputs, shape.tree, mesh, o.mesh);
+    if (o.stats) {
+        nlohmann::ordered_json stats;
+        stats["modules"] = word.size();
+        stats["nodes"] = shape.tree.size();
+        stats["edges"] = shape.tree.edgeCount();
+        stats["polygons"] = shape.polygonCount();
+        stats["vertices"] = mesh.vertexCount();
+        stats["triangles"] = mesh.triangleCount();
+        stats["derive_seconds"] = deriveSeconds;
+        stats["interpret_seconds"] = interpretSeconds;
+        stats["mesh_seconds"] = meshSeconds;
+        std::printf("%s\n", stats.dump().c_str());
+    }
+}
+
+}  // namespace
+
+void addLsystemCommand(CLI::App& app) {
+    auto options = std::make_shared<LsystemOptions>();
+    CLI::App* cmd = app.add_subcommand("lsystem", "grow a plant from an L-system file (.lsys)");
+    cmd->add_option("FILE", options->file, "the .lsys file")->required();
+    cmd->add_option("-n,--derivations", options->derivations,
+                    "derivation steps (default: the file's `derivations:`)")
+        ->check(CLI::Range(0, 1000));
+    cmd->add_option("--seed", options->seed, "seed for stochastic rules and rand()")->expected(1);
+    cmd->add_option("--set", options->sets, "override a constant: NAME=VALUE (repeatable)");
+    cmd->add_option("--max-modules", options->maxModules,
+                    "stop with an error when a derived word would exceed this many modules")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--tropism-mode", options->tropismMode,
+                    "rotate (ABOP, bending accumulates) or blend (seed 002 eq 2.18)")
+        ->check(CLI::IsMember({"rotate", "blend"}));
+    cmd->add_flag("--print", options->print, "print the derived word in file notation");
+    cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
+    addTreeOutputOptions(*cmd, options->outputs);
+    addTubeMeshOptions(*cmd, options->mesh);
+    cmd->callback([options] { run(*options); });
+}
+
+}  // namespace ramus::cli

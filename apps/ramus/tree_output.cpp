@@ -1,0 +1,87 @@
+#include "tree_output.hpp"
+
+#include <cstdio>
+
+#include "ramus/error.hpp"
+#include "ramus/export.hpp"
+#include "ramus/file_util.hpp"
+#include "ramus/render.hpp"
+#include "ramus/tree_json.hpp"
+
+namespace ramus::cli {
+
+void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs) {
+    command.add_option("-o,--output", outputs.model, "write the model: OUT.glb or OUT.obj");
+    command.add_option("--tree-json", outputs.treeJson, "write the branch tree as JSON");
+    command.add_option("--png", outputs.png, "write a PNG preview");
+    command.add_option("--view", outputs.view, "preview view: side|front|top|three-quarter")
+        ->capture_default_str();
+    command.add_option("--size", outputs.size, "preview size WxH")->capture_default_str();
+}
+
+void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params) {
+    command
+        .add_option("--leaf-radius", params.leafRadius,
+                    "tip radius r0 for Murray's rule, model units (0 = 4% of mean edge)")
+        ->check(CLI::NonNegativeNumber);
+    command.add_option("--radius-exponent", params.radiusExponent, "Murray exponent g (> 0)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command
+        .add_option("--trunk-multiplier", params.trunkMultiplier,
+                    "root ring radius = multiplier x root edge radius")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command.add_option("--min-segments", params.minSegments, "ring vertices, thinnest branches")
+        ->check(CLI::Range(3, 256))
+        ->capture_default_str();
+    command.add_option("--max-segments", params.maxSegments, "ring vertices, thickest branches")
+        ->check(CLI::Range(3, 256))
+        ->capture_default_str();
+    command
+        .add_option("--curve-reduction", params.curveReduction,
+                    "max_K in [0,1): skip rings where a chain is this straight (0 = off)")
+        ->check(CLI::Range(0.0, 0.999999));
+    command
+        .add_option(
+            "--no-caps",
+            [&params](const CLI::results_t&) {
+                params.capTips = false;
+                return true;
+            },
+            "leave branch tips open")
+        ->expected(0);
+}
+
+void parseImageSize(const std::string& text, int& width, int& height) {
+    int w = 0, h = 0;
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 8192 ||
+        h > 8192) {
+        throw Error("--size: invalid image size '" + text +
+                    "'; expected WxH with 16 <= W, H <= 8192, e.g. 800x600");
+    }
+    width = w;
+    height = h;
+}
+
+void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const Mesh& mesh,
+                      const TubeMeshParams& meshParams) {
+    if (mesh.positions.empty() && (!outputs.model.empty() || !outputs.png.empty())) {
+        std::fprintf(stderr, "warning: the tree has no drawn branches; the model is empty\n");
+    }
+    // Validate everything before writing anything, so bad flags leave no files behind.
+    RenderParams render;
+    if (!outputs.png.empty()) {
+        render.view = parseView(outputs.view);
+        parseImageSize(outputs.size, render.width, render.height);
+    }
+    const Scene scene = makeSingleMeshScene(mesh, "tree");
+    if (!outputs.model.empty()) writeScene(scene, outputs.model);
+    if (!outputs.treeJson.empty()) {
+        writeFileAtomic(outputs.treeJson, encodeTreeJson(tree, computeEdgeRadii(tree, meshParams)));
+    }
+    if (!outputs.png.empty()) writePng(renderScene(scene, render), outputs.png);
+}
+
+}  // namespace ramus::cli
