@@ -30,7 +30,7 @@ showcase: run
 test: deps format-check unit validate asan-test fuzz-smoke
 	@echo "make test: all checks passed"
 
-unit: build
+unit: deps
 	@cmake -S . -B $(BUILD)-checked $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release \
 	  -DRAMUS_ENABLE_ASSERTS=ON -DRAMUS_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(BUILD)-checked -j $(JOBS)

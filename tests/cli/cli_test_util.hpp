@@ -1,6 +1,8 @@
 // Runs the real `ramus` binary for end-to-end tests of the command-line tool.
 #pragma once
 
+#include <sys/wait.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <string>
