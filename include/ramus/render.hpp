@@ -10,16 +10,34 @@
 
 namespace ramus {
 
-enum class View { Side, Front, Top, ThreeQuarter };
+/// Camera directions, in glTF's axes (Y up, front +Z, the model's left at +X). Every view keeps
+/// +Y up on screen except Top.
+enum class View {
+    Side,         ///< from -X toward +X: the model's right side, its front (+Z) facing right
+    Front,        ///< from +Z toward -Z: facing the model, its left (+X) on the right
+    Top,          ///< from +Y down: +X right, the front (+Z) toward the bottom of the image
+    ThreeQuarter  ///< from front-left and above: azimuth 45° from +Z toward +X, elevation 25°
+};
 
-/// Parses "side|front|top|three-quarter"; throws Error listing the accepted names.
+/// Parses "side", "front", "top" or "three-quarter" (also "threequarter" and "3q"); throws
+/// Error listing the accepted names.
 View parseView(const std::string& name);
 
-struct RenderParams {
+/// An image size in pixels.
+struct ImageSize {
     int width = 800;
     int height = 800;
+};
+
+/// Parses "WxH" (decimal integers separated by 'x' or 'X', e.g. "800x600") with
+/// 16 <= W, H <= 8192; throws Error quoting the text and the expected form otherwise.
+ImageSize parseImageSize(const std::string& text);
+
+struct RenderParams {
+    int width = 800;   ///< pixels, 1..16384
+    int height = 800;  ///< pixels, 1..16384
     View view = View::ThreeQuarter;
-    Vec4f background{1.0f, 1.0f, 1.0f, 1.0f};
+    Vec4f background{1.0f, 1.0f, 1.0f, 1.0f};  ///< linear RGBA like material colours
     bool groundShadow = false;  ///< reserved for skeleton previews
 };
 
@@ -32,6 +50,11 @@ struct Image {
 
 /// Renders the scene (all nodes with meshes, world transforms applied) with an orthographic
 /// camera fitted to its bounds. An empty scene gives an image of the background colour.
+/// Lighting: ambient + a key and a fill light fixed to the camera (Lambert) times the material's
+/// base colour, written as sRGB; 3×3 supersampling. Back faces of single-sided materials are
+/// culled; double-sided materials are lit from the side facing the camera. Alpha is ignored
+/// (opaque). Throws Error for sizes outside 1..16384 or a scene that fails the exporters'
+/// checks (e.g. indices out of range).
 Image renderScene(const Scene& scene, const RenderParams& params = {});
 
 /// Encodes PNG bytes (stb_image_write).

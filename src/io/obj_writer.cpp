@@ -1,0 +1,181 @@
+// Based on: the Wavefront OBJ and MTL file formats (Wavefront Advanced Visualizer manual,
+// appendices B1 "Object Files" and B2 "Material Library Files"); PBR roughness → Ns as in
+// Blender's OBJ exporter (Ns = 900·(1 − roughness)²), plus the common "Pr"/"Pm" PBR extension.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+#include "io/scene_check.hpp"
+#include "ramus/error.hpp"
+#include "ramus/export.hpp"
+#include "ramus/file_util.hpp"
+
+namespace ramus {
+
+namespace {
+
+// OBJ/MTL names end at whitespace: replace it, and give unnamed things a name.
+std::string objName(const std::string& name, const std::string& fallback) {
+    if (name.empty()) return fallback;
+    std::string out = name;
+    for (char& c : out) {
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') c = '_';
+    }
+    return out;
+}
+
+void appendFloats(std::string& out, const char* tag, const float* v, int n) {
+    out += tag;
+    for (int i = 0; i < n; ++i) {
+        out += ' ';
+        out += io::formatFloat(v[i]);
+    }
+    out += '\n';
+}
+
+bool sameMaterial(const Material& a, const Material& b) {
+    return a.name == b.name && a.baseColor == b.baseColor && a.metallic == b.metallic &&
+           a.roughness == b.roughness && a.doubleSided == b.doubleSided;
+}
+
+// The scene's distinct materials with unique OBJ names, in first-use order.
+class MaterialTable {
+public:
+    const std::string& nameOf(const Material& m) {
+        for (std::size_t i = 0; i < materials_.size(); ++i) {
+            if (sameMaterial(materials_[i], m)) return names_[i];
+        }
+        const std::string base = objName(m.name, "material");
+        std::string name = base;
+        for (int k = 2; std::find(names_.begin(), names_.end(), name) != names_.end(); ++k) {
+            name = base + "_" + std::to_string(k);
+        }
+        materials_.push_back(m);
+        names_.push_back(name);
+        return names_.back();
+    }
+
+    std::string mtl() const {
+        std::string out = "# ramus 0.1.0 material library\n";
+        for (std::size_t i = 0; i < materials_.size(); ++i) {
+            const Material& m = materials_[i];
+            // Specular colour: dielectric F0 = 0.04, blending to the base colour for metals.
+            const Vec3f ks = Vec3f::Constant(0.04f) * (1.0f - m.metallic) +
+                             Vec3f(m.baseColor.head<3>()) * m.metallic;
+            // Rounded to 0.001: the exponent is a shading hint, float noise would only clutter.
+            const double gloss = 1.0 - static_cast<double>(m.roughness);
+            const auto ns = static_cast<float>(std::round(900.0 * gloss * gloss * 1000.0) / 1000.0);
+            const Vec3f ka = Vec3f::Zero();
+            out += "\nnewmtl " + names_[i] + "\n";
+            appendFloats(out, "Ka", ka.data(), 3);
+            appendFloats(out, "Kd", m.baseColor.data(), 3);
+            appendFloats(out, "Ks", ks.data(), 3);
+            appendFloats(out, "Ns", &ns, 1);
+            appendFloats(out, "d", &m.baseColor[3], 1);
+            out += "illum 2\n";
+            appendFloats(out, "Pr", &m.roughness, 1);
+            appendFloats(out, "Pm", &m.metallic, 1);
+        }
+        return out;
+    }
+
+private:
+    std::vector<Material> materials_;
+    std::vector<std::string> names_;
+};
+
+struct VertexBase {
+    std::size_t position = 1;  // OBJ indices are 1-based and global over the file
+    std::size_t uv = 1;
+    std::size_t normal = 1;
+};
+
+void appendIndex(std::string& out, std::size_t value) {
+    char buf[24];
+    const auto result = std::to_chars(buf, buf + sizeof buf, value);
+    out.append(buf, result.ptr);
+}
+
+// " v", " v/vt", " v//vn" or " v/vt/vn" for vertex i of the instance.
+void appendCorner(std::string& out, const Mesh& mesh, const VertexBase& base, std::uint32_t i) {
+    out += ' ';
+    appendIndex(out, base.position + i);
+    if (mesh.uvs.empty() && mesh.normals.empty()) return;
+    out += '/';
+    if (!mesh.uvs.empty()) appendIndex(out, base.uv + i);
+    if (!mesh.normals.empty()) {
+        out += '/';
+        appendIndex(out, base.normal + i);
+    }
+}
+
+// Vertices of one placed mesh: positions by the world matrix, normals by its cofactor matrix
+// (the inverse transpose up to scale, defined even for zero scale), uvs flipped to OBJ's
+// bottom-left origin.
+void appendVertices(std::string& out, const Mesh& mesh, const Mat4& world) {
+    const Eigen::Matrix3d m = world.topLeftCorner<3, 3>();
+    Eigen::Matrix3d cofactor;
+    cofactor << m.col(1).cross(m.col(2)), m.col(2).cross(m.col(0)), m.col(0).cross(m.col(1));
+    if (m.determinant() < 0.0) cofactor = -cofactor;
+    for (const Vec3f& p : mesh.positions) {
+        const Vec3f w = (m * p.cast<double>() + world.topRightCorner<3, 1>()).cast<float>();
+        appendFloats(out, "v", w.data(), 3);
+    }
+    for (const Vec2f& uv : mesh.uvs) {
+        const Vec2f t(uv.x(), 1.0f - uv.y());
+        appendFloats(out, "vt", t.data(), 2);
+    }
+    for (const Vec3f& n : mesh.normals) {
+        Vec3 w = cofactor * n.cast<double>();
+        const double len = w.norm();
+        w = len > 1e-300 ? Vec3(w / len) : Vec3(Vec3::UnitY());
+        const Vec3f wf = w.cast<float>();
+        appendFloats(out, "vn", wf.data(), 3);
+    }
+}
+
+void appendInstance(std::string& out, const Scene& scene, const io::MeshInstance& inst,
+                    MaterialTable& materials, VertexBase& base) {
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    const std::string fallback =
+        inst.node >= 0 ? "node_" + std::to_string(inst.node) : "mesh_" + std::to_string(inst.mesh);
+    const std::string name =
+        objName(inst.node >= 0 ? scene.nodes[inst.node].name : mesh.name, fallback);
+    out += "o " + name + "\ng " + name + "\n";
+    appendVertices(out, mesh, inst.world);
+    // A mirroring transform turns counter-clockwise faces clockwise: swap two corners back.
+    const bool mirrored = inst.world.topLeftCorner<3, 3>().determinant() < 0.0;
+    for (const MeshPrimitive& prim : io::drawnPrimitives(mesh)) {
+        out += "usemtl " + materials.nameOf(io::primitiveMaterial(mesh, prim)) + "\n";
+        for (std::uint32_t k = prim.firstIndex; k < prim.firstIndex + prim.indexCount; k += 3) {
+            out += 'f';
+            appendCorner(out, mesh, base, mesh.indices[k]);
+            appendCorner(out, mesh, base, mesh.indices[mirrored ? k + 2 : k + 1]);
+            appendCorner(out, mesh, base, mesh.indices[mirrored ? k + 1 : k + 2]);
+            out += '\n';
+        }
+    }
+    base.position += mesh.positions.size();
+    base.uv += mesh.uvs.size();
+    base.normal += mesh.normals.size();
+}
+
+}  // namespace
+
+void writeObj(const Scene& scene, const std::string& path) {
+    io::checkScene(scene, path);
+    const std::filesystem::path mtlPath = std::filesystem::path(path).replace_extension(".mtl");
+    std::string obj = "# ramus 0.1.0 OBJ export: Y up, metres, front +Z\n";
+    obj += "mtllib " + mtlPath.filename().string() + "\n";
+    MaterialTable materials;
+    VertexBase base;
+    for (const io::MeshInstance& inst : io::meshInstances(scene)) {
+        appendInstance(obj, scene, inst, materials, base);
+    }
+    // The library first, so the OBJ never points at a missing or stale MTL.
+    writeFileAtomic(mtlPath.string(), materials.mtl());
+    writeFileAtomic(path, obj);
+}
+
+}  // namespace ramus
