@@ -38,7 +38,7 @@ struct RenderParams {
     int height = 800;  ///< pixels, 1..16384
     View view = View::ThreeQuarter;
     Vec4f background{1.0f, 1.0f, 1.0f, 1.0f};  ///< linear RGBA like material colours
-    bool groundShadow = false;  ///< reserved for skeleton previews
+    bool groundShadow = false;                 ///< reserved for skeleton previews
 };
 
 /// An 8-bit RGBA image, rows top to bottom.
