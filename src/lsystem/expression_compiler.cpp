@@ -109,7 +109,7 @@ private:
     /// Emits `op` over the `operands` values whose code starts at `begin`; folds when every
     /// operand is a single constant and the op is not random.
     void emitOp(Op op, std::size_t begin, int operands, bool random, std::size_t at) {
-        if ((op == Op::Div || op == Op::Mod) && isConst(code_.size() - 1) &&
+        if ((op == Op::Div || op == Op::Mod) && dead_ == 0 && isConst(code_.size() - 1) &&
             code_.back().value == 0.0) {
             fail(at, "division by zero; expected a non-zero divisor");
         }
@@ -125,10 +125,11 @@ private:
         double value = 0.0;
         EvalStatus st =
             evaluate(code_.data() + begin, code_.data() + code_.size(), nullptr, unused, value);
-        if (st == EvalStatus::DivisionByZero) {
+        if (st != EvalStatus::Ok && dead_ > 0) {
+            value = 0.0;  // never evaluated (short-circuit): the code is dropped anyway
+        } else if (st == EvalStatus::DivisionByZero) {
             fail(at, "division by zero in a constant expression; expected a non-zero divisor");
-        }
-        if (st == EvalStatus::NonFinite) {
+        } else if (st == EvalStatus::NonFinite) {
             fail(at,
                  "constant expression has no finite value (NaN or infinity); expected "
                  "arguments inside the function's domain");
@@ -191,7 +192,9 @@ private:
             code_.resize(begin);
             push(-1);
             std::size_t rhsBegin = code_.size();
+            dead_ += decided ? 1 : 0;
             isOr ? parseLogic(false) : parseEquality();
+            dead_ -= decided ? 1 : 0;
             if (decided) {
                 code_.resize(rhsBegin);  // right side never evaluated: drop it
                 push(-1);
@@ -336,6 +339,7 @@ private:
     std::size_t pos_ = 0;
     int stack_ = 0;
     int nesting_ = 0;
+    int dead_ = 0;  ///< > 0 while compiling code that short-circuiting never evaluates
 };
 
 void Compiler::parseNumber() {
