@@ -1,0 +1,70 @@
+// Based on: uniform grid with counting sort into cell order (see spatial_grid.hpp).
+#include "spatial_grid.hpp"
+
+#include <algorithm>
+
+namespace ramus::colonize_detail {
+
+SpatialGrid::SpatialGrid(std::span<const Vec3f> points, double influenceRadius, int subdivision,
+                         std::size_t maxCells, std::vector<std::uint32_t>& order) {
+    Aabb box;
+    for (const Vec3f& p : points) box.add(p.cast<double>());
+    if (box.empty()) box.add(Vec3::Zero());
+    const Vec3 extent = box.extent();
+
+    // Cells of d_i / subdivision; a margin of cells wide enough for nodes within d_i of a point.
+    double cell = influenceRadius / std::max(1, subdivision);
+    for (;;) {
+        const int margin = static_cast<int>(std::ceil(influenceRadius / cell));
+        double total = 1.0;
+        for (int a = 0; a < 3; ++a) {
+            count_[a] = static_cast<int>(std::floor(extent[a] / cell)) + 1 + 2 * margin;
+            total *= count_[a];
+        }
+        if (total <= static_cast<double>(std::max<std::size_t>(maxCells, 64))) {
+            origin_ = box.min - Vec3::Constant(margin * cell);
+            break;
+        }
+        cell *= 1.25;
+    }
+    cellSize_ = cell;
+    inverseCell_ = 1.0 / cell;
+
+    // Counting sort of the points into cell order (stable: equal cells keep index order).
+    const std::size_t cells = static_cast<std::size_t>(count_[0]) * count_[1] * count_[2];
+    cellStart_.assign(cells + 1, 0);
+    std::vector<std::uint32_t> cellOfPoint(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto c = static_cast<std::uint32_t>(cellOf(points[i].cast<double>()));
+        cellOfPoint[i] = c;
+        ++cellStart_[c + 1];
+    }
+    for (std::size_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
+    order.assign(points.size(), 0);
+    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        order[fill[cellOfPoint[i]]++] = static_cast<std::uint32_t>(i);
+    }
+}
+
+std::int64_t SpatialGrid::cellOf(const Vec3& p) const {
+    std::int64_t index = 0;
+    for (int a = 2; a >= 0; --a) {
+        const double f = std::floor((p[a] - origin_[a]) * inverseCell_);
+        if (!(f >= 0.0 && f < count_[a])) return -1;
+        index = index * count_[a] + static_cast<std::int64_t>(f);
+    }
+    return index;
+}
+
+bool SpatialGrid::containsBall(const Vec3& center, double radius) const {
+    for (int a = 0; a < 3; ++a) {
+        if (center[a] - radius < origin_[a] ||
+            center[a] + radius >= origin_[a] + cellSize_ * count_[a]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace ramus::colonize_detail

@@ -1,0 +1,109 @@
+// Based on: uniform grid hashing for fixed-radius neighbour search (e.g. Green, "Particle
+// Simulation using CUDA", 2010, counting-sort cell order). The attraction points are static, so
+// they are sorted once into cell order (a cell's points are contiguous, a row of cells is one
+// range); nodes are added over time into per-cell linked lists.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ramus/math.hpp"
+
+namespace ramus::colonize_detail {
+
+/// A box of cubic cells over the attraction points, with a margin of cells around it wide
+/// enough to hold every node that can be within the influence radius of a point.
+class SpatialGrid {
+public:
+    SpatialGrid() = default;
+
+    /// Builds the grid over `points` (any count; empty gives a 1-cell grid) with cells of about
+    /// influenceRadius / subdivision, coarser if that would need more than ~maxCells cells.
+    /// `order` receives the point indices in cell order; cellStart() gives each cell's range.
+    SpatialGrid(std::span<const Vec3f> points, double influenceRadius, int subdivision,
+                std::size_t maxCells, std::vector<std::uint32_t>& order);
+
+    std::size_t cellCount() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
+    double cellSize() const { return cellSize_; }
+
+    /// Cell of p, or -1 when p lies outside the grid.
+    std::int64_t cellOf(const Vec3& p) const;
+
+    /// Calls visit(first, last) for ranges [first, last) of cell-ordered points that cover
+    /// every point within `radius` of `center` (and some farther ones).
+    template <typename Visit>
+    void forEachPointRange(const Vec3& center, double radius, Visit&& visit) const {
+        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1) {
+            visit(cellStart_[rowCell + static_cast<std::size_t>(x0)],
+                  cellStart_[rowCell + static_cast<std::size_t>(x1) + 1]);
+        });
+    }
+
+    /// Calls visit(cell) for every cell that may hold a position within `radius` of `center`.
+    template <typename Visit>
+    void forEachCell(const Vec3& center, double radius, Visit&& visit) const {
+        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1) {
+            for (int x = x0; x <= x1; ++x) visit(rowCell + static_cast<std::size_t>(x));
+        });
+    }
+
+    /// True when the ball of `radius` around `center` lies inside the grid.
+    bool containsBall(const Vec3& center, double radius) const;
+
+    /// Bytes used by the grid's own arrays.
+    std::size_t memoryBytes() const { return cellStart_.capacity() * sizeof(std::uint32_t); }
+
+private:
+    // Calls visit(cellIndexOfRowStart, x0, x1) for each row (y, z) of cells touched by the
+    // ball, with the x range narrowed to the ball's chord in that row.
+    template <typename Visit>
+    void forEachRow(const Vec3& c, double r, Visit&& visit) const {
+        int lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = clampIndex(std::floor((c[a] - r - origin_[a]) * inverseCell_), a);
+            hi[a] = clampIndex(std::floor((c[a] + r - origin_[a]) * inverseCell_), a);
+            if (c[a] + r < origin_[a] || c[a] - r > origin_[a] + cellSize_ * count_[a]) return;
+        }
+        const double r2 = r * r;
+        for (int z = lo[2]; z <= hi[2]; ++z) {
+            const double dz = axisGap(c.z(), z, 2);
+            const double dz2 = dz * dz;
+            if (dz2 > r2) continue;
+            for (int y = lo[1]; y <= hi[1]; ++y) {
+                const double dy = axisGap(c.y(), y, 1);
+                const double rest = r2 - dz2 - dy * dy;
+                if (rest < 0.0) continue;
+                const double w = std::sqrt(rest);
+                const int x0 = clampIndex(std::floor((c.x() - w - origin_.x()) * inverseCell_), 0);
+                const int x1 = clampIndex(std::floor((c.x() + w - origin_.x()) * inverseCell_), 0);
+                const std::size_t row =
+                    (static_cast<std::size_t>(z) * count_[1] + static_cast<std::size_t>(y)) *
+                    count_[0];
+                visit(row, x0, x1);
+            }
+        }
+    }
+
+    int clampIndex(double cell, int axis) const {
+        if (!(cell >= 0.0)) return 0;
+        return cell >= count_[axis] - 1 ? count_[axis] - 1 : static_cast<int>(cell);
+    }
+
+    // Distance along `axis` from coordinate v to the slab of cell i (0 inside).
+    double axisGap(double v, int i, int axis) const {
+        const double lo = origin_[axis] + cellSize_ * i;
+        if (v < lo) return lo - v;
+        const double hi = lo + cellSize_;
+        return v > hi ? v - hi : 0.0;
+    }
+
+    Vec3 origin_ = Vec3::Zero();
+    double cellSize_ = 1.0;
+    double inverseCell_ = 1.0;
+    int count_[3] = {1, 1, 1};
+    std::vector<std::uint32_t> cellStart_;
+};
+
+}  // namespace ramus::colonize_detail
