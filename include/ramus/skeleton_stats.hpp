@@ -76,20 +76,27 @@ struct Condition {
 
 /// The distribution of a feature point given fixed values for some features:
 /// μ̄ = μ₁ + Σ₁₂Σ₂₂⁻¹(b − μ₂), Σ̄ = Σ₁₁ − Σ₁₂Σ₂₂⁻¹Σ₂₁ (seed 000 §4.5, its typo corrected), with
-/// the eigen-decomposition re-run on Σ̄.
+/// the eigen-decomposition re-run on Σ̄. Σ̄ does not depend on b, so one model serves any number
+/// of samples; each sample draws its own random offsets for the fixed values.
 struct ConditionalModel {
-    std::vector<int> fixedFeatures;  ///< ascending
-    std::vector<int> freeFeatures;   ///< ascending; the rest
-    /// Full feature point: conditional mean at the free features, the fixed values (with their
-    /// random offsets) at the fixed ones.
+    std::vector<Condition> conditions;  ///< sorted by feature
+    std::vector<int> fixedFeatures;     ///< ascending (the conditions' features)
+    std::vector<int> freeFeatures;      ///< ascending; the rest
+    /// Full feature point at the conditions' values without offsets: the conditional mean at
+    /// the free features, the scaled values at the fixed ones.
     Eigen::VectorXd mean;
+    /// Σ₁₂Σ₂₂⁻¹ (free × fixed): how the free features' mean moves per unit (scaled) change of
+    /// a fixed value — the regression coefficients.
+    Eigen::MatrixXd gain;
     /// Σ̄ over the free features (in freeFeatures order).
     Eigen::MatrixXd covariance;
     /// Eigenvalues of Σ̄, descending, ≥ 0; eigenvectors as columns in the same order.
     Eigen::VectorXd eigenvalues;
     Eigen::MatrixXd eigenvectors;
 
-    /// Draws q ~ N(0, Λ̄) and maps it back: free features μ̄ + V̄q, fixed features as fixed.
+    /// Draws each condition's offset from U(−jitter/2, jitter/2) (in feature order), moves the
+    /// mean by gain·(b − b₀), then draws q ~ N(0, Λ̄) and maps it back: free features
+    /// μ̄ + V̄q, fixed features the offset values.
     Eigen::VectorXd sample(Rng& rng) const;
 };
 
@@ -133,13 +140,14 @@ public:
 
     /// A random skeleton: qᵢ ~ N(0, λᵢ) independently, mapped back (seed 000 §3.5, §5.1).
     Eigen::VectorXd sample(Rng& rng) const;
-    /// The conditional model for the conditions (their random offsets drawn from rng). Throws
-    /// Error for a feature index out of range, a feature conditioned twice, a non-finite value,
-    /// or an impossible condition (a value the data never varies towards, e.g. wings = 1 when no
-    /// species has wings). Near-singular Σ₂₂ blocks are regularized. No conditions = the
-    /// unconditioned model.
-    ConditionalModel condition(const std::vector<Condition>& conditions, Rng& rng) const;
-    /// condition(conditions, rng).sample(rng).
+    /// The conditional model for the conditions. Throws Error for a feature index out of
+    /// range, a feature conditioned twice, a non-finite value or jitter, or an impossible
+    /// condition: a value (or a random offset) in a direction the data never varies in, e.g.
+    /// wings = 1 when no species has wings. Near-singular Σ₂₂ blocks are regularized by a
+    /// truncated pseudo-inverse. No conditions = the unconditioned model. To draw many samples
+    /// under the same conditions, call this once and ConditionalModel::sample repeatedly.
+    ConditionalModel condition(const std::vector<Condition>& conditions) const;
+    /// condition(conditions).sample(rng).
     Eigen::VectorXd sampleConditioned(const std::vector<Condition>& conditions, Rng& rng) const;
     /// The feature point of a species, by English or German name (case-insensitive). Throws
     /// Error listing the known names when there is no such species.

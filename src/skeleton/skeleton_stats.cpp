@@ -184,7 +184,7 @@ Eigen::VectorXd SkeletonStats::sample(Rng& rng) const {
 
 Eigen::VectorXd SkeletonStats::sampleConditioned(const std::vector<Condition>& conditions,
                                                  Rng& rng) const {
-    return condition(conditions, rng).sample(rng);
+    return condition(conditions).sample(rng);
 }
 
 Eigen::VectorXd SkeletonStats::fromExample(std::string_view name) const {

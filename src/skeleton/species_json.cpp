@@ -86,12 +86,12 @@ const Json& require(const Json& object, const char* key, const RecordContext& ct
 }
 
 void rejectUnknownFields(const Json& object, std::initializer_list<std::string_view> known,
-                         const RecordContext& ctx) {
+                         const RecordContext& ctx, const std::string& prefix = {}) {
     for (const auto& item : object.items()) {
         if (std::find(known.begin(), known.end(), item.key()) != known.end()) continue;
         std::string list;
         for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-        ctx.fail(item.key(), "unknown field; expected one of " + list);
+        ctx.fail(prefix + item.key(), "unknown field; expected one of " + list);
     }
 }
 
@@ -115,7 +115,8 @@ std::array<Vec2, kSpinePointCount> parseSpine(const Json& value, const RecordCon
 std::array<double, kLimbCount> parseLimbs(const Json& value, const RecordContext& ctx) {
     if (!value.is_object()) ctx.fail("limbs", "expected an object, got " + describe(value));
     std::array<double, kLimbCount> limbs{};
-    rejectUnknownFields(value, {"upper_arm", "forearm", "hand", "thigh", "shank", "foot"}, ctx);
+    rejectUnknownFields(value, {"upper_arm", "forearm", "hand", "thigh", "shank", "foot"}, ctx,
+                        "limbs.");
     for (int i = 0; i < kLimbCount; ++i) {
         const std::string key(limbName(static_cast<Limb>(i)));
         const auto it = value.find(key);

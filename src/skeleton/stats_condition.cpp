@@ -13,21 +13,16 @@ namespace ramus {
 
 namespace {
 
-// Directions of Σ₂₂ with an eigenvalue at most this fraction of Σ's largest are treated as
-// having no variance at all: the data fixes them, so a condition must agree with the data there.
-constexpr double kDegenerate = 1e-12;
-// Tikhonov term (fraction of Σ's largest eigenvalue) added to the other eigenvalues of Σ₂₂, so a
-// nearly singular block cannot blow the conditional mean up.
-constexpr double kRidge = 1e-10;
-// How far (in scaled feature units; 1e-9 = 1e-6 px) a condition may deviate from the data along
-// a direction without variance before it is impossible.
-constexpr double kResidualTolerance = 1e-9;
-
-struct FixedValue {
-    int feature = 0;
-    double userValue = 0;  // with the random offset
-    double scaled = 0;
-};
+// Regularization by truncation: directions of Σ₂₂ whose eigenvalue is at most this fraction of
+// Σ's largest are treated as fixed by the data (dropped from the inverse — a truncated
+// pseudo-inverse — and checked for consistency instead). 1e-9 lies three orders of magnitude
+// below the thesis data's smallest eigenvalue (1e-6 of 0.35) and the variances of wings and
+// legs (~1e-5), so well-posed conditions are computed exactly.
+constexpr double kDegenerate = 1e-9;
+// A condition contradicts such a direction when it lies more than this many of the data's
+// standard deviations (in that direction) away from the mean, and more than kMinResidual.
+constexpr double kResidualSigmas = 6.0;
+constexpr double kMinResidual = 1e-9;  // scaled feature units (1e-6 px)
 
 std::string userValueText(int feature, double value) {
     char buffer[64];
@@ -36,12 +31,11 @@ std::string userValueText(int feature, double value) {
     return buffer;
 }
 
-// Validates the conditions and draws their offsets, in feature order (so the order in which
-// the caller lists them does not change the result).
-std::vector<FixedValue> fixValues(std::vector<Condition> conditions, Rng& rng) {
+// Validates the conditions and sorts them by feature (so the order in which the caller lists
+// them does not change the result).
+std::vector<Condition> validated(std::vector<Condition> conditions) {
     std::sort(conditions.begin(), conditions.end(),
               [](const Condition& a, const Condition& b) { return a.feature < b.feature; });
-    std::vector<FixedValue> fixed;
     for (std::size_t i = 0; i < conditions.size(); ++i) {
         const Condition& c = conditions[i];
         if (c.feature < 0 || c.feature >= kFeatureCount) {
@@ -57,41 +51,47 @@ std::vector<FixedValue> fixValues(std::vector<Condition> conditions, Rng& rng) {
         if (!std::isfinite(c.jitter) || c.jitter < 0) {
             throw Error("condition on " + name + ": expected a finite jitter >= 0");
         }
-        double value = c.value;
-        if (c.jitter > 0) value += rng.uniform(-0.5 * c.jitter, 0.5 * c.jitter);
-        fixed.push_back({c.feature, value, scaleFeatureValue(c.feature, value)});
     }
-    return fixed;
+    return conditions;
 }
 
-// The features involved in a direction, for the "impossible" message.
+// The conditions involved in a direction, for the "impossible" message.
 std::string describeDirection(const Eigen::VectorXd& direction,
-                              const std::vector<FixedValue>& fixed) {
+                              const std::vector<Condition>& conditions) {
     std::string text;
     for (Eigen::Index k = 0; k < direction.size(); ++k) {
         if (std::abs(direction[k]) < 0.05) continue;
-        text += (text.empty() ? "" : ", ") + featureName(fixed[k].feature) + " = " +
-                userValueText(fixed[k].feature, fixed[k].userValue);
+        const Condition& c = conditions[k];
+        text += (text.empty() ? "" : ", ") + featureName(c.feature) + " = " +
+                userValueText(c.feature, c.value);
+        if (c.jitter > 0) text += " ± " + userValueText(c.feature, c.jitter / 2);
     }
     return text;
 }
 
-// Σ₂₂⁺: the regularized pseudo-inverse of the fixed block; throws when b contradicts a
-// direction the data never varies in.
+// Σ₂₂⁺: the truncated pseudo-inverse of the fixed block. Throws when the conditions contradict
+// a direction the data (practically) never varies in, or put a random offset on it.
 Eigen::MatrixXd regularizedInverse(const Eigen::MatrixXd& block, const Eigen::VectorXd& offset,
-                                   double largestEigenvalue, const std::vector<FixedValue>& fixed) {
+                                   double largestEigenvalue,
+                                   const std::vector<Condition>& conditions) {
     const detail::SortedEigen eigen = detail::decomposeSymmetric(block);
     const Eigen::VectorXd residual = eigen.vectors.transpose() * offset;
     Eigen::VectorXd inverseValues(eigen.values.size());
     for (Eigen::Index j = 0; j < eigen.values.size(); ++j) {
         if (eigen.values[j] > kDegenerate * largestEigenvalue) {
-            inverseValues[j] = 1.0 / (eigen.values[j] + kRidge * largestEigenvalue);
+            inverseValues[j] = 1.0 / eigen.values[j];
             continue;
         }
         inverseValues[j] = 0.0;
-        if (std::abs(residual[j]) > kResidualTolerance) {
+        const double allowed = std::max(kMinResidual, kResidualSigmas * std::sqrt(eigen.values[j]));
+        bool jittered = false;
+        for (Eigen::Index k = 0; k < eigen.vectors.rows(); ++k) {
+            jittered =
+                jittered || (conditions[k].jitter > 0 && std::abs(eigen.vectors(k, j)) > 1e-6);
+        }
+        if (std::abs(residual[j]) > allowed || jittered) {
             throw Error("impossible condition: the species data never varies in the direction of " +
-                        describeDirection(eigen.vectors.col(j), fixed) +
+                        describeDirection(eigen.vectors.col(j), conditions) +
                         " (every species agrees there); expected values the data allows, e.g. "
                         "the mean, with jitter 0");
         }
@@ -110,15 +110,14 @@ Eigen::MatrixXd submatrix(const Eigen::MatrixXd& m, const std::vector<int>& rows
 
 }  // namespace
 
-ConditionalModel SkeletonStats::condition(const std::vector<Condition>& conditions,
-                                          Rng& rng) const {
-    const std::vector<FixedValue> fixed = fixValues(conditions, rng);
+ConditionalModel SkeletonStats::condition(const std::vector<Condition>& conditions) const {
     ConditionalModel model;
+    model.conditions = validated(conditions);
     model.mean = mean_;
     std::vector<bool> isFixed(kFeatureCount, false);
-    for (const FixedValue& f : fixed) {
-        model.fixedFeatures.push_back(f.feature);
-        isFixed[f.feature] = true;
+    for (const Condition& c : model.conditions) {
+        model.fixedFeatures.push_back(c.feature);
+        isFixed[c.feature] = true;
     }
     for (int i = 0; i < kFeatureCount; ++i) {
         if (!isFixed[i]) model.freeFeatures.push_back(i);
@@ -127,16 +126,20 @@ ConditionalModel SkeletonStats::condition(const std::vector<Condition>& conditio
     const std::vector<int>& b = model.fixedFeatures;
 
     Eigen::VectorXd offset(b.size());  // b − μ₂
-    for (std::size_t k = 0; k < b.size(); ++k) offset[k] = fixed[k].scaled - mean_[b[k]];
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        const Condition& c = model.conditions[k];
+        offset[k] = scaleFeatureValue(c.feature, c.value) - mean_[b[k]];
+    }
     const Eigen::MatrixXd inverse =
-        regularizedInverse(submatrix(covariance_, b, b), offset, eigenvalues_[0], fixed);
+        regularizedInverse(submatrix(covariance_, b, b), offset, eigenvalues_[0], model.conditions);
     const Eigen::MatrixXd crossAB = submatrix(covariance_, a, b);  // Σ₁₂
+    model.gain = crossAB * inverse;
 
-    const Eigen::VectorXd meanShift = crossAB * (inverse * offset);
+    const Eigen::VectorXd meanShift = model.gain * offset;
     for (std::size_t k = 0; k < a.size(); ++k) model.mean[a[k]] += meanShift[k];
-    for (const FixedValue& f : fixed) model.mean[f.feature] = f.scaled;
+    for (std::size_t k = 0; k < b.size(); ++k) model.mean[b[k]] = mean_[b[k]] + offset[k];
 
-    Eigen::MatrixXd cov = submatrix(covariance_, a, a) - crossAB * inverse * crossAB.transpose();
+    const Eigen::MatrixXd cov = submatrix(covariance_, a, a) - model.gain * crossAB.transpose();
     model.covariance = 0.5 * (cov + cov.transpose());  // exact symmetry for the solver
     detail::SortedEigen eigen = detail::decomposeSymmetric(model.covariance);
     model.eigenvalues = std::move(eigen.values);
@@ -146,6 +149,18 @@ ConditionalModel SkeletonStats::condition(const std::vector<Condition>& conditio
 
 Eigen::VectorXd ConditionalModel::sample(Rng& rng) const {
     Eigen::VectorXd point = mean;
+    // The fixed values with their random offsets, and the mean shift they cause.
+    Eigen::VectorXd delta(conditions.size());
+    for (std::size_t k = 0; k < conditions.size(); ++k) {
+        const Condition& c = conditions[k];
+        const double value =
+            c.jitter > 0 ? c.value + rng.uniform(-0.5 * c.jitter, 0.5 * c.jitter) : c.value;
+        const double scaled = scaleFeatureValue(c.feature, value);
+        delta[k] = scaled - mean[c.feature];
+        point[c.feature] = scaled;
+    }
+    const Eigen::VectorXd moved = gain * delta;
+    for (std::size_t k = 0; k < freeFeatures.size(); ++k) point[freeFeatures[k]] += moved[k];
     const Eigen::Index n = eigenvalues.size();
     if (n == 0) return point;
     Eigen::VectorXd q(n);

@@ -37,6 +37,16 @@ std::string escapeXml(std::string_view text) {
             case '"':
                 out += "&quot;";
                 break;
+            // Attribute-value normalization would turn these into spaces.
+            case '\n':
+                out += "&#10;";
+                break;
+            case '\r':
+                out += "&#13;";
+                break;
+            case '\t':
+                out += "&#9;";
+                break;
             default:
                 out += c;
         }

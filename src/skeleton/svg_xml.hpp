@@ -33,7 +33,7 @@ struct XmlDocument {
 /// no root element, or nesting deeper than 256.
 XmlDocument parseXml(std::string_view text, const std::string& fileName);
 
-/// Escapes & < > " for use in an attribute value or text.
+/// Escapes & < > " and tab/CR/LF (as character references) for an attribute value or text.
 std::string escapeXml(std::string_view text);
 
 }  // namespace ramus::detail
