@@ -50,11 +50,12 @@ Camera cameraFor(View view) {
 }
 
 // Lambert lighting with lights fixed to the camera (camera space: x right, y up, z toward the
-// viewer): ambient, a key light from the upper left and a weaker fill from the right.
+// viewer): ambient, a key light from the upper left and a weaker fill from the lower right. The
+// brightest possible sum stays below 1 so lit colours are not clipped.
 float lightIntensity(const Vec3& n) {
-    static constexpr double kAmbient = 0.3, kKey = 0.7, kFill = 0.25;
-    const Vec3 key = Vec3(-0.35, 0.55, 0.76).normalized();
-    const Vec3 fill = Vec3(0.65, -0.1, 0.75).normalized();
+    static constexpr double kAmbient = 0.2, kKey = 0.75, kFill = 0.2;
+    static const Vec3 key = Vec3(-0.45, 0.65, 0.6).normalized();
+    static const Vec3 fill = Vec3(0.7, -0.1, 0.7).normalized();
     const double lit =
         kAmbient + kKey * std::max(0.0, n.dot(key)) + kFill * std::max(0.0, n.dot(fill));
     return static_cast<float>(lit);

@@ -99,12 +99,12 @@ TEST(Render, CubeCoversTheMiddleAndLeavesTheCornersBackground) {
 }
 
 TEST(Render, FaceTowardTheCameraHasTheLitBaseColour) {
-    // Front view sees the +Z face, normal (0, 0, 1) in camera space: intensity = 0.3 ambient
-    // + 0.7·0.7590 (key) + 0.25·0.7519 (fill) = 1.0193; 0.8 · 1.0193 = 0.8154 linear
-    // → sRGB 1.055·0.8154^(1/2.4) − 0.055 = 0.9140 → 233.
+    // Front view sees the +Z face, normal (0, 0, 1) in camera space: intensity = 0.2 ambient
+    // + 0.75·0.6046 (key) + 0.2·0.7035 (fill) = 0.7941; 0.8 · 0.7941 = 0.6353 linear
+    // → sRGB 1.055·0.6353^(1/2.4) − 0.055 = 0.8183 → 209.
     const Image image = render(makeSingleMeshScene(makeCube()), View::Front, 64);
     const Rgba p = pixel(image, 32, 32);
-    EXPECT_NEAR(p.r, 233, 1);
+    EXPECT_NEAR(p.r, 209, 1);
     EXPECT_EQ(p.r, p.g);
     EXPECT_EQ(p.g, p.b);
 }
@@ -225,6 +225,16 @@ TEST(Render, MirroredNodesStillShowTheirOutsides) {
     for (std::size_t i = 0; i < a.rgba.size(); ++i)
         different += std::abs(a.rgba[i] - b.rgba[i]) > 2;
     EXPECT_LT(different, 100) << "of " << a.rgba.size();
+}
+
+TEST(Render, AGlbReadBackRendersLikeTheSceneItWasWrittenFrom) {
+    // The path of `ramus render`: GLB file → readGltf → renderScene → PNG.
+    const Scene scene = testing::makeHierarchyScene();
+    const std::string path = (testing::scratchDir("render_glb") / "tree.glb").string();
+    writeGlb(scene, path);
+    const Image direct = render(scene, View::ThreeQuarter);
+    const Image viaFile = render(readGltf(path), View::ThreeQuarter);
+    EXPECT_EQ(viaFile.rgba, direct.rgba);
 }
 
 TEST(Render, SizeOutOfRangeIsAnError) {
