@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
@@ -241,6 +242,23 @@ TEST(GltfReader, AccessorPastTheBufferIsAnError) {
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()),
                   path + ": buffer view 0 is too short for the data it holds");
+    }
+}
+
+TEST(GltfReader, NonFiniteVertexDataIsAnError) {
+    std::string bin;
+    appendRaw<float>(bin, {0, 0, 0, 1, 0, 0, 0, NAN, 0});
+    json doc = json::parse(R"({
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}]})");
+    const std::string path = writeGltf("nan", doc, bin);
+    try {
+        readGltf(path);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path + ": POSITION accessor 0 element 2 is not a finite number");
     }
 }
 
