@@ -1,9 +1,11 @@
 // Derivation throughput of the npm package `lindenmayer` (1.5.4) on the systems that
 // bench/lsystem_bench.cpp measures for ramus (examples/lsystems/*.lsys), so run.sh can print
 // them side by side. Prints one JSON object per line:
-//   {"system", "n", "modules", "seconds", "modules_per_s", "runs"}
-// `seconds` is the median wall time of one derivation from the axiom over `runs` timed runs
-// (after one warm-up run); modules is the length of the derived word.
+//   {"system", "n", "modules", "seconds", "wall_seconds", "modules_per_s", "runs"}
+// `seconds` is the median CPU time (user + system of the whole node process, so garbage
+// collector and JIT threads count) of one derivation from the axiom over `runs` timed runs,
+// after one warm-up run; `wall_seconds` the median wall time; modules the word's length.
+// CPU time is what run.sh compares, because the machines we measure on are shared.
 //
 // Usage: node lindenmayer_bench.mjs [system ...]   (default: all of abop_1_24f abop_2_6a
 // abop_1_31a)
@@ -70,10 +72,12 @@ const kSystems = {
 
 function deriveOnce(make, n) {
   const system = make();
-  const start = process.hrtime.bigint();
+  const cpuStart = process.cpuUsage();
+  const wallStart = process.hrtime.bigint();
   const word = system.iterate(n);
-  const seconds = Number(process.hrtime.bigint() - start) / 1e9;
-  return {seconds, modules: word.length};
+  const wall = Number(process.hrtime.bigint() - wallStart) / 1e9;
+  const cpu = process.cpuUsage(cpuStart);
+  return {seconds: (cpu.user + cpu.system) / 1e6, wall, modules: word.length};
 }
 
 function median(values) {
@@ -84,16 +88,18 @@ function median(values) {
 
 function measure(name, make, n) {
   const {modules} = deriveOnce(make, n);  // warm-up (JIT), also gives the module count
-  const times = [];
+  const times = [], walls = [];
   let spent = 0;
   while (times.length < kMaxRuns && (times.length < kMinRuns || spent < kMinSeconds)) {
     const run = deriveOnce(make, n);
     if (run.modules !== modules) throw new Error(`${name} n=${n}: word length changed`);
     times.push(run.seconds);
-    spent += run.seconds;
+    walls.push(run.wall);
+    spent += run.wall;
   }
   const seconds = median(times);
-  return {system: name, n, modules, seconds, modules_per_s: modules / seconds, runs: times.length};
+  return {system: name, n, modules, seconds, wall_seconds: median(walls),
+          modules_per_s: modules / seconds, runs: times.length};
 }
 
 const wanted = process.argv.length > 2 ? process.argv.slice(2) : Object.keys(kSystems);

@@ -26,6 +26,7 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
+echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
 echo "ramus_bench ($bench) …" >&2
 "$bench" \
     --benchmark_filter='^BM_Derive/(abop_1_24f/([6-9]|10)|abop_2_6a/1[0-6]|abop_1_31a/[123]0)$' \
@@ -34,6 +35,7 @@ echo "ramus_bench ($bench) …" >&2
     --benchmark_format=json >"$tmp/ramus.json"
 echo "lindenmayer $(node -p "require('$here/node_modules/lindenmayer/package.json').version") …" >&2
 node "$here/lindenmayer_bench.mjs" >"$tmp/lindenmayer.jsonl"
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
 
 node --input-type=module - "$tmp/ramus.json" "$tmp/lindenmayer.jsonl" <<'EOF'
 import {readFileSync} from 'node:fs';
@@ -44,8 +46,9 @@ const ramus = new Map();
 for (const b of JSON.parse(readFileSync(ramusFile, 'utf8')).benchmarks) {
   if (b.aggregate_name !== 'median') continue;
   const [, system, n] = b.run_name.split('/');
-  const seconds = b.real_time * unitSeconds[b.time_unit];
-  ramus.set(`${system}/${n}`, {modules: b.modules, seconds});
+  const seconds = b.cpu_time * unitSeconds[b.time_unit];
+  const wall = b.real_time * unitSeconds[b.time_unit];
+  ramus.set(`${system}/${n}`, {modules: b.modules, seconds, wall});
 }
 const peer = new Map();
 for (const line of readFileSync(peerFile, 'utf8').split('\n')) {
@@ -56,7 +59,8 @@ for (const line of readFileSync(peerFile, 'utf8').split('\n')) {
 
 const fmt = (x, digits = 1) => x.toFixed(digits);
 const rows = [['system', 'n', 'modules ramus', 'modules lindenmayer', 'same',
-               'ramus Mmod/s', 'lindenmayer Mmod/s', 'speedup', 'ramus ns/module']];
+               'ramus Mmod/s', 'lindenmayer Mmod/s', 'speedup', 'ramus ns/module',
+               'ramus wall ms', 'lindenmayer wall ms']];
 for (const [key, r] of ramus) {
   const p = peer.get(key);
   const [system, n] = key.split('/');
@@ -64,13 +68,15 @@ for (const [key, r] of ramus) {
   rows.push([system, n, String(r.modules), p ? String(p.modules) : '-',
              p ? (p.modules === r.modules ? 'yes' : 'NO') : '-', fmt(ours / 1e6, 2),
              p ? fmt(p.modules_per_s / 1e6, 3) : '-',
-             p ? fmt(ours / p.modules_per_s) + '×' : '-', fmt(1e9 * r.seconds / r.modules, 2)]);
+             p ? fmt(ours / p.modules_per_s) + '×' : '-', fmt(1e9 * r.seconds / r.modules, 2),
+             fmt(1e3 * r.wall, 3), p ? fmt(1e3 * p.wall_seconds, 3) : '-']);
 }
 const widths = rows[0].map((_, c) => Math.max(...rows.map((row) => row[c].length)));
 for (const [i, row] of rows.entries()) {
   console.log('| ' + row.map((cell, c) => cell.padStart(widths[c])).join(' | ') + ' |');
   if (i === 0) console.log('|' + widths.map((w) => '-'.repeat(w + 1) + ':').join('|') + '|');
 }
-console.log('\nspeedup = (ramus modules/s) / (lindenmayer modules/s), each on its own word;');
+console.log('\nCPU time per derivation (median); speedup = (ramus modules/s) / (lindenmayer');
+console.log('modules/s), each on its own word;');
 console.log('"same = NO" rows compare throughput on words of different length (see README.md).');
 EOF
