@@ -231,7 +231,8 @@ void LSystemParser::parseModuleDeclaration(const TextLine& line, std::size_t pos
         while (pos < t.size() && !isSpaceChar(t[pos])) {
             char c = t[pos];
             auto u = static_cast<unsigned char>(c);
-            if (c == '[' || c == ']' || (u < 0x80 && !isModuleStart(c))) {
+            if (c == '[' || c == ']' || (u < 0x80 && !isModuleStart(c)) ||
+                t.compare(pos, 3, "\xE2\x86\x92") == 0) {
                 line.fail(pos, "module name contains " + describeChar(t, pos) +
                                    "; expected letters, digits or other characters that are "
                                    "not syntax ( ) , # < > : [ ]");

@@ -39,7 +39,8 @@ void LSystemParser::parseProduction(const TextLine& line, std::size_t arrow,
     std::vector<std::string> formals;
     parsePredecessor(line, colon == kNpos ? arrow : colon, rule, formals);
     ExprScope scope{&formals, &constants_, true, "in this production"};
-    if (colon != kNpos) {
+    // cpfg/ABOP write `: *` for "no condition".
+    if (colon != kNpos && trimSpaces(t.substr(colon + 1, arrow - colon - 1)) != "*") {
         rule.condition = compileClause(line, colon + 1, arrow, scope, "'->'");
         const ExprInfo& cond = rules_->exprs[rule.condition];
         const Instr& first = rules_->code[cond.codeBegin];
@@ -100,7 +101,10 @@ void LSystemParser::parsePredecessor(const TextLine& line, std::size_t end, Rule
     std::vector<std::size_t> offsets;
     addPattern(line, pred, formals, offsets, false);
 
+    // cpfg/ABOP write `*` for "any context": `* < A > * -> B` is the same as `A -> B`.
     auto& patterns = rules_->patterns;
+    if (lt != kNpos && trimSpaces(t.substr(0, lt)) == "*") lt = kNpos;
+    if (gt != kNpos && trimSpaces(t.substr(gt + 1, end - gt - 1)) == "*") gt = kNpos;
     if (lt != kNpos) {
         auto left = parseWord(line, 0, lt, WordMode::Pattern, nullptr);
         if (left.empty()) line.fail(lt, "empty left context; expected modules before '<'");

@@ -59,6 +59,11 @@ std::vector<WordModule> LSystemParser::parseWord(const TextLine& line, std::size
                               "expected a module (productions read 'left < pred > right : "
                               "condition -> successor : weight')");
         }
+        if (t.compare(pos, 3, "\xE2\x86\x92") == 0) {
+            sub.fail(pos,
+                     "'\xE2\x86\x92' is the production arrow; expected a module (one "
+                     "production per line)");
+        }
         auto u = static_cast<unsigned char>(c);
         if (!isModuleStart(c) || (u >= 0x80 && charLength(t, pos) == 1)) {
             sub.fail(pos, "unexpected " + describeChar(t, pos) + "; expected a module");

@@ -55,6 +55,13 @@ TEST(LSystemContext, RightContextMayEnterBranches) {
     EXPECT_EQ(rewriteS("S > GMNOP"), unchanged);  // the branch ends after O
 }
 
+TEST(LSystemContext, StarMeansAnyContextAndAnyCondition) {
+    // cpfg / ABOP notation: `* < + > * -> -` and `: *` (ABOP fig. 1.31, fig. 2.6).
+    EXPECT_EQ(derive("axiom: +A(1)-\n* < + > * -> -\n* < - > * -> +\nA(x) : * -> B(x)", 1),
+              "-B(1)+");
+    EXPECT_EQ(derive("axiom: *A*\n* < A -> X", 1), "*X*");  // a lone `*` module elsewhere
+}
+
 TEST(LSystemContext, BothContextsMustMatch) {
     EXPECT_EQ(derive("axiom: ABC ABD\nA < B > C -> X", 1), "AXCABD");
 }

@@ -265,6 +265,14 @@ TEST(LSystemParseErrors, ReservedCharacterInSuccessor) {
                 HasSubstr("bad.lsys:2:8: '>' separates the parts of a production"));
 }
 
+TEST(LSystemParseErrors, SecondArrowInProduction) {
+    EXPECT_THAT(parseError("axiom: A\nA -> B \xE2\x86\x92 C"),
+                HasSubstr("bad.lsys:2:8: '\xE2\x86\x92' is the production arrow; expected a "
+                          "module"));
+    EXPECT_THAT(parseError("axiom: A\nA -> B -> C"),
+                HasSubstr("bad.lsys:2:9: '>' separates the parts of a production"));
+}
+
 TEST(LSystemParseErrors, BracketWithParameters) {
     EXPECT_THAT(parseError("axiom: F[(1)F]"),
                 HasSubstr("bad.lsys:1:10: brackets take no parameters"));
