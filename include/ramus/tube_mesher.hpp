@@ -22,19 +22,25 @@ enum class RadiusMode {
 struct TubeMeshParams {
     RadiusMode radiusMode = RadiusMode::Auto;
     /// r_0, radius at the tips for Murray's rule, model units; 0 = automatic (4 % of the mean
-    /// edge length).
+    /// length of the drawn edges).
     double leafRadius = 0.0;
     double radiusExponent = 2.0;   ///< g of Murray's rule (> 0); 2 = area preserving
     double trunkMultiplier = 1.0;  ///< root ring radius = multiplier × root edge's end radius
-    int minSegments = 4;           ///< ring vertices for the thinnest branches (≥ 3)
-    int maxSegments = 16;          ///< ring vertices for the thickest (≥ minSegments)
+    /// Ring vertices (segments) per chain: min + round((max - min) · r_first / r_max), r_first
+    /// the chain's first ring radius, r_max the tree's largest. Clamped to [3, 4096].
+    int minSegments = 4;   ///< for the thinnest branches (≥ 3)
+    int maxSegments = 16;  ///< for the thickest (≥ minSegments)
     /// Curve reduction max_K in (0,1): a chain node whose two unit edge directions have a dot
     /// product above it gets no ring of its own. 0 = off.
     double curveReduction = 0.0;
     double startRotationDegrees = 0.0;  ///< rot_z: angle of the first ring vertex
-    bool capTips = true;                ///< close branch ends with a cone/fan cap
-    /// Bark texture repeats: u goes once around a ring; v = arc length / (circumference at
-    /// that ring × uvAspect) so texels stay square (uvAspect = texture height / width).
+    /// Close open tube ends with a flat fan: branch tips, and chain starts that no drawn tube
+    /// passes through (the root, after hidden edges).
+    bool capTips = true;
+    /// Bark texture repeats: u goes 0 → 1 once around a ring (seam vertex duplicated); v starts
+    /// at 0 on a chain's first ring and decreases by length / (mean circumference × uvAspect)
+    /// per tube piece, so texels stay square (uvAspect = texture height / width) and, with
+    /// glTF's top-left UV origin, the image's top points along the growth direction.
     double uvAspect = 1.0;
     Material material{"bark", {0.42f, 0.30f, 0.20f, 1.0f}, 0.0f, 0.95f, false};
 };
@@ -44,14 +50,21 @@ struct TubeMeshParams {
 /// (before trunkMultiplier). Indexed by node id; empty tree → empty vector.
 std::vector<double> computeEdgeRadii(const BranchTree& tree, const TubeMeshParams& params = {});
 
-/// Meshes `tree` into tubes. Every edge not marked hidden gets a tube piece; output has
-/// positions, unit normals, tangents (w = +1), uvs, one primitive "bark". Empty tree or a tree
-/// of only a root gives an empty mesh. Deterministic.
+/// Meshes `tree` into tubes. Every edge not marked hidden gets a tube piece; edges of equal
+/// branch depth form chains that share rings; other children (and children of hidden nodes)
+/// start a new chain with a ring at their parent's position. Rings use rotation-minimizing
+/// frames; coincident nodes are merged. Output: mesh "tree" with positions, unit normals,
+/// tangents (w = +1: cross(normal, tangent) points to decreasing v), uvs, one primitive "bark"
+/// with params.material; triangles counter-clockwise from outside. Empty tree, root only or
+/// only hidden edges → empty mesh (no primitives, no materials). Deterministic.
 Mesh buildTubeMesh(const BranchTree& tree, const TubeMeshParams& params = {});
 
-/// Triangulates planar-ish polygons (fan from the centroid, both faces so they show from either
-/// side) into a mesh with one primitive "leaves" using `material`. Polygons with fewer than 3
-/// vertices are skipped. Layout as TurtleResult: offsets has polygonCount + 1 entries.
+/// Triangulates planar-ish polygons into a mesh "leaves" with one primitive "leaves": each
+/// polygon is ear-clipped in its Newell plane (concave ones too) into one sheet facing its
+/// Newell normal, and `material` is returned with doubleSided = true so the sheet shows from
+/// both sides. UVs span each polygon's bounds (v = 1 at its first vertex, 0 at the farthest
+/// one); tangents w = +1. Polygons with fewer than 3 vertices or no area are skipped; none left
+/// → empty mesh. Layout as TurtleResult: offsets has polygonCount + 1 entries.
 Mesh buildPolygonMesh(std::span<const Vec3> vertices, std::span<const std::uint32_t> offsets,
                       const Material& material = {
                           "leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f, 0.8f, true});

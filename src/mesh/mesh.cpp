@@ -29,6 +29,9 @@ void appendMesh(Mesh& mesh, const Mesh& other) {
     const bool wasEmpty = mesh.positions.empty();
     const auto vertexBase = static_cast<std::uint32_t>(mesh.positions.size());
     const auto indexBase = static_cast<std::uint32_t>(mesh.indices.size());
+    // A mesh drawn without materials uses an implicit default: make it explicit first, so the
+    // other mesh's material indices are re-based past it.
+    if (mesh.materials.empty() && !mesh.indices.empty()) mesh.materials.push_back(Material{});
     const auto materialBase = static_cast<std::uint32_t>(mesh.materials.size());
 
     std::vector<MeshPrimitive> primitives = explicitPrimitives(mesh);
@@ -37,7 +40,6 @@ void appendMesh(Mesh& mesh, const Mesh& other) {
         p.material += materialBase;
         primitives.push_back(std::move(p));
     }
-    if (mesh.materials.empty() && !mesh.indices.empty()) mesh.materials.push_back(Material{});
     mesh.materials.insert(mesh.materials.end(), other.materials.begin(), other.materials.end());
     if (other.materials.empty() && !other.indices.empty()) mesh.materials.push_back(Material{});
 

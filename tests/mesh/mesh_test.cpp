@@ -1,0 +1,82 @@
+// appendMesh: re-basing of indices, primitives and materials; attribute arrays.
+#include "ramus/mesh.hpp"
+
+#include <gtest/gtest.h>
+
+namespace ramus {
+namespace {
+
+Mesh triangle(float x, bool attributes) {
+    Mesh mesh;
+    mesh.positions = {Vec3f(x, 0, 0), Vec3f(x + 1, 0, 0), Vec3f(x, 1, 0)};
+    if (attributes) {
+        mesh.normals.assign(3, Vec3f(0, 0, 1));
+        mesh.tangents.assign(3, Vec4f(1, 0, 0, 1));
+        mesh.uvs.assign(3, Vec2f(0, 0));
+    }
+    mesh.indices = {0, 1, 2};
+    return mesh;
+}
+
+TEST(AppendMesh, RebasesIndicesPrimitivesAndMaterials) {
+    Mesh a = triangle(0, true);
+    a.materials.push_back(Material{"bark"});
+    a.primitives.push_back(MeshPrimitive{0, 3, 0, "bark"});
+    Mesh b = triangle(5, true);
+    b.materials.push_back(Material{"leaves"});
+    b.primitives.push_back(MeshPrimitive{0, 3, 0, "leaves"});
+    appendMesh(a, b);
+    EXPECT_EQ(a.indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+    ASSERT_EQ(a.primitives.size(), 2u);
+    EXPECT_EQ(a.primitives[1].firstIndex, 3u);
+    EXPECT_EQ(a.primitives[1].material, 1u);
+    ASSERT_EQ(a.materials.size(), 2u);
+    EXPECT_EQ(a.materials[1].name, "leaves");
+    EXPECT_EQ(a.normals.size(), 6u);
+    EXPECT_EQ(a.tangents.size(), 6u);
+    EXPECT_EQ(a.uvs.size(), 6u);
+}
+
+TEST(AppendMesh, MeshWithoutMaterialsKeepsItsDefaultAndTheOtherMaterialStaysApart) {
+    Mesh a = triangle(0, false);  // drawn, but no materials: implicit default material
+    Mesh b = triangle(5, false);
+    b.materials.push_back(Material{"leaves"});
+    b.primitives.push_back(MeshPrimitive{0, 3, 0, "leaves"});
+    appendMesh(a, b);
+    ASSERT_EQ(a.materials.size(), 2u);
+    ASSERT_EQ(a.primitives.size(), 2u);
+    EXPECT_EQ(a.primitives[0].material, 0u);
+    EXPECT_EQ(a.primitives[1].material, 1u);
+    EXPECT_EQ(a.materials[a.primitives[1].material].name, "leaves");
+}
+
+TEST(AppendMesh, AttributesMissingOnOneSideAreDropped) {
+    Mesh a = triangle(0, true);
+    appendMesh(a, triangle(5, false));
+    EXPECT_EQ(a.positions.size(), 6u);
+    EXPECT_TRUE(a.normals.empty());
+    EXPECT_TRUE(a.tangents.empty());
+    EXPECT_TRUE(a.uvs.empty());
+}
+
+TEST(AppendMesh, AppendingToAnEmptyMeshKeepsTheOthersAttributes) {
+    Mesh a;
+    appendMesh(a, triangle(5, true));
+    EXPECT_EQ(a.positions.size(), 3u);
+    EXPECT_EQ(a.normals.size(), 3u);
+    EXPECT_EQ(a.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
+TEST(AppendMesh, AppendingAnEmptyMeshChangesNothing) {
+    Mesh a = triangle(0, true);
+    a.materials.push_back(Material{"bark"});
+    a.primitives.push_back(MeshPrimitive{0, 3, 0, "bark"});
+    appendMesh(a, Mesh{});
+    EXPECT_EQ(a.positions.size(), 3u);
+    EXPECT_EQ(a.normals.size(), 3u);
+    EXPECT_EQ(a.primitives.size(), 1u);
+    EXPECT_EQ(a.materials.size(), 1u);
+}
+
+}  // namespace
+}  // namespace ramus
