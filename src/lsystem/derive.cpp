@@ -25,6 +25,8 @@ using detail::SymbolKind;
 
 /// Parameter values allowed per module on average before the module limit applies to them.
 constexpr std::size_t kParamsPerModuleLimit = 4;
+/// Largest word size: indices are 32 bits and 0xFFFFFFFF means "none" in context tables.
+constexpr std::size_t kMaxIndex = 0xFFFFFFFEu;
 
 /// Reserves room for `count` elements; for large words asks the kernel for transparent huge
 /// pages. Most of a derivation's time otherwise goes into first-touch page faults of the
@@ -55,10 +57,10 @@ public:
           rules_(*system.rules),
           matcher_(*system.rules),
           rng_(options.overrideSeed ? options.seed : system.settings.seed),
-          maxModules_(options.maxModules),
-          maxParams_(options.maxModules > SIZE_MAX / kParamsPerModuleLimit
-                         ? SIZE_MAX
-                         : options.maxModules * kParamsPerModuleLimit),
+          // Words index modules and parameters with 32 bits (Module::paramOffset).
+          maxModules_(std::min<std::size_t>(options.maxModules, kMaxIndex)),
+          maxParams_(std::min<std::size_t>(maxModules_, kMaxIndex / kParamsPerModuleLimit) *
+                     kParamsPerModuleLimit),
           steps_(options.derivations < 0 ? system.settings.derivations : options.derivations) {
         if (options.derivations < -1) {
             throw Error(SourceLoc{system.fileName, 0, 0},

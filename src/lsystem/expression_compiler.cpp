@@ -264,7 +264,7 @@ private:
     void parseTerm() {
         std::size_t begin = code_.size();
         parseUnary();
-        while (peek() == '*' || peek() == '/' || peek() == '%') {
+        while ((peek() == '*' && peek(1) != '*') || peek() == '/' || peek() == '%') {
             std::size_t at = pos_;
             Op op = peek() == '*' ? Op::Mul : peek() == '/' ? Op::Div : Op::Mod;
             ++pos_;
@@ -291,10 +291,11 @@ private:
     void parsePower() {
         std::size_t begin = code_.size();
         parsePrimary();
-        if (peek() == '^') {
+        bool caret = peek() == '^';
+        if (caret || (peek() == '*' && peek(1) == '*')) {
             std::size_t at = pos_;
             enter(at);
-            ++pos_;
+            pos_ += caret ? 1 : 2;
             skip();
             parseUnary();  // right-associative; the exponent may carry a sign: 2^-1
             emitOp(Op::Pow, begin, 2, false, at);

@@ -47,6 +47,16 @@ constexpr const char* kHeaderKeys =
 
 bool isKey(std::string_view key, std::string_view name) { return key == name; }
 
+/// The header key before `colon`, trimmed and lower-cased (keys are case-insensitive, so
+/// L-Py's `Axiom:` and cpfg's `Derivation length:` work).
+std::string headerKey(std::string_view text, std::size_t colon) {
+    std::string key(trimSpaces(text.substr(0, colon)));
+    for (char& c : key) {
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    }
+    return key;
+}
+
 bool isDerivationsKey(std::string_view key) {
     return key == "derivations" || key == "n" || key == "iterations" || key == "derivation length";
 }
@@ -146,7 +156,7 @@ void LSystemParser::declarationPass() {
         } else {
             std::size_t colon = line.text.find(':');
             if (colon == kNpos) continue;
-            std::string_view key = trimSpaces(line.text.substr(0, colon));
+            std::string key = headerKey(line.text, colon);
             if (key == "ignore" || key == "consider") {
                 lists.push_back(i);
                 isDeclaration_[i] = 1;
@@ -156,7 +166,7 @@ void LSystemParser::declarationPass() {
     for (std::size_t i : lists) {
         const TextLine& line = lines_[i];
         std::size_t colon = line.text.find(':');
-        parseSymbolList(line, colon + 1, trimSpaces(line.text.substr(0, colon)) == "consider");
+        parseSymbolList(line, colon + 1, headerKey(line.text, colon) == "consider");
     }
 }
 
@@ -170,6 +180,9 @@ void LSystemParser::mainPass() {
             continue;
         }
         std::size_t colon = line.text.find(':');
+        // cpfg frames a system with `Lsystem: <name>` … `endlsystem`; both carry nothing here.
+        if (trimSpaces(line.text) == "endlsystem") continue;
+        if (colon != kNpos && headerKey(line.text, colon) == "lsystem") continue;
         if (colon == kNpos) {
             std::size_t end = trimSpaces(line.text).size() + skipSpaces(line.text, 0);
             line.fail(end,
@@ -228,7 +241,7 @@ void LSystemParser::parseModuleDeclaration(const TextLine& line, std::size_t pos
     if (pos >= t.size()) line.fail(pos, "expected module names after 'module'");
     while (pos < t.size()) {
         std::size_t start = pos;
-        while (pos < t.size() && !isSpaceChar(t[pos])) {
+        while (pos < t.size() && !isSpaceChar(t[pos]) && t[pos] != ',') {
             char c = t[pos];
             auto u = static_cast<unsigned char>(c);
             if (c == '[' || c == ']' || (u < 0x80 && !isModuleStart(c)) ||
@@ -245,8 +258,10 @@ void LSystemParser::parseModuleDeclaration(const TextLine& line, std::size_t pos
                 multiNames_.emplace_back(name);
             }
         }
+        if (name.empty()) line.fail(pos, "expected a module name, got ','");
         internSymbol(name);
         pos = skipSpaces(t, pos);
+        if (pos < t.size() && t[pos] == ',') pos = skipSpaces(t, pos + 1);
     }
 }
 
@@ -273,7 +288,8 @@ void LSystemParser::parseSymbolList(const TextLine& line, std::size_t pos, bool 
 void LSystemParser::parseHeader(const TextLine& line, std::size_t colon) {
     std::string_view t = line.text;
     std::size_t keyPos = skipSpaces(t, 0);
-    std::string_view key = trimSpaces(t.substr(0, colon));
+    std::string keyText = headerKey(t, colon);
+    std::string_view key = keyText;
     std::size_t valuePos = skipSpaces(t, colon + 1);
     bool known = isDerivationsKey(key) || isKey(key, "axiom") || isKey(key, "angle") ||
                  isKey(key, "step") || isKey(key, "seed") || isKey(key, "tropism") ||

@@ -45,6 +45,8 @@ TEST(LSystemExpression, PowerIsRightAssociativeAndBindsTighterThanUnaryMinus) {
     EXPECT_DOUBLE_EQ(value("(-2) ^ 2"), 4.0);
     EXPECT_DOUBLE_EQ(value("2 ^ -1"), 0.5);
     EXPECT_DOUBLE_EQ(value("2 * 3 ^ 2"), 18.0);
+    EXPECT_DOUBLE_EQ(value("2 ** 3 ** 2"), 512.0);  // L-Py / Python spelling
+    EXPECT_DOUBLE_EQ(value("2 * -3 ** 2"), -18.0);
 }
 
 TEST(LSystemExpression, ComparisonsAndLogicGiveZeroOrOne) {

@@ -59,6 +59,12 @@ TEST(LSystemParser, AcceptsCpfgAndShortNamesForDerivations) {
     EXPECT_EQ(parseLSystem("derivation length: 5\naxiom: F").settings.derivations, 5);
 }
 
+TEST(LSystemParser, AcceptsCpfgFramingAndCapitalizedKeys) {
+    LSystem s = parseLSystem("Lsystem: 1\nDerivation length: 2\nAxiom: F\nF --> FF\nendlsystem\n");
+    EXPECT_EQ(s.settings.derivations, 2);
+    EXPECT_EQ(formatModules(s.symbols, deriveLSystem(s)), "FFFF");
+}
+
 TEST(LSystemParser, ReadsTropismWithCommasAndExpressions) {
     LSystem s = parseLSystem("#define e 0.2\ntropism: 0, -1, (1 + 1)/4, e\naxiom: F");
     EXPECT_DOUBLE_EQ(s.settings.tropism.y(), -1.0);
@@ -116,6 +122,11 @@ TEST(LSystemParser, DeclaredModulesUseLongestMatch) {
     LSystem s = parseLSystem("module Apex Ap Internode\naxiom: ApexApInternode[A]Ape");
     EXPECT_EQ(axiomNames(s),
               (std::vector<std::string>{"Apex", "Ap", "Internode", "[", "A", "]", "Ap", "e"}));
+}
+
+TEST(LSystemParser, ModuleDeclarationsMaySeparateNamesWithCommas) {
+    LSystem s = parseLSystem("module Apex, Internode,Leaf\naxiom: InternodeLeafApex");
+    EXPECT_EQ(axiomNames(s), (std::vector<std::string>{"Internode", "Leaf", "Apex"}));
 }
 
 TEST(LSystemParser, ModuleDeclarationsMayFollowTheirUse) {
