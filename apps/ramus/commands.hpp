@@ -8,5 +8,7 @@ namespace ramus::cli {
 
 void addLsystemCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addSpeciesCommand(CLI::App& app);
+void addPcaCommand(CLI::App& app);
 
 }  // namespace ramus::cli

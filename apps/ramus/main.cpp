@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "ramus 0.1.0");
     ramus::cli::addLsystemCommand(app);
     ramus::cli::addRenderCommand(app);
+    ramus::cli::addSpeciesCommand(app);
+    ramus::cli::addPcaCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
