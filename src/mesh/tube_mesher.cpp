@@ -76,7 +76,8 @@ Vec3 initialReference(const Vec3& t) {
     if (a.y() < a[axis]) axis = 1;
     if (a.z() < a[axis]) axis = 2;
     const Vec3 ref = Vec3::Unit(axis);
-    return (ref - ref.dot(t) * t).normalized();
+    const Vec3 perpendicular = ref - ref.dot(t) * t;  // |.|² >= 2/3 for unit t
+    return perpendicular * (1.0 / perpendicular.norm());
 }
 
 // Double reflection (Wang et al. 2008): carries reference vector `r0` of the frame with
@@ -92,7 +93,7 @@ Vec3 transportReference(const Vec3& r0, const Vec3& t0, const Vec3& step, const 
     r1 -= r1.dot(t1) * t1;
     const double length2 = r1.squaredNorm();
     if (std::abs(length2 - 1.0) < 1e-6) return r1 * (1.5 - 0.5 * length2);
-    return length2 > 1e-24 ? Vec3(r1 / std::sqrt(length2)) : initialReference(t1);
+    return length2 > 1e-24 ? Vec3(r1 * (1.0 / std::sqrt(length2))) : initialReference(t1);
 }
 
 class TubeBuilder {
@@ -260,7 +261,7 @@ void TubeBuilder::gatherRings(NodeId first) {
         const double length2 = in.squaredNorm();
         if (length2 > merge2) {
             const double length = std::sqrt(length2);
-            const Vec3 direction = in / length;
+            const Vec3 direction = in * (1.0 / length);  // one division, not three
             bool keep = true;
             if (maxK > 0.0 && node.childCount == 1 && next != kNoNode) {
                 const Vec3 out = tree_.node(next).position - node.position;
@@ -376,7 +377,7 @@ void TubeBuilder::meshChain(NodeId first) {
         if (k + 1 < count) {
             const Vec3 bisector = ring.direction + rings_[k + 1].direction;
             const double length2 = bisector.squaredNorm();
-            if (length2 > 1e-12) nextNormal = bisector / std::sqrt(length2);
+            if (length2 > 1e-12) nextNormal = bisector * (1.0 / std::sqrt(length2));
         }
         e1 = transportReference(e1, normal, ring.direction, nextNormal);
         normal = nextNormal;
