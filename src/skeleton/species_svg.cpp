@@ -83,6 +83,15 @@ public:
         for (int i = 0; i < kLimbCount; ++i) {
             record.features.limbs[i] = limbLength(annotations_[kFirstLimbSlot + i], toFrame);
         }
+        // Extreme transforms can overflow; a record must hold finite numbers only.
+        bool finite = true;
+        for (const Vec2& p : record.features.spine) finite = finite && p.allFinite();
+        for (double length : record.features.limbs) finite = finite && std::isfinite(length);
+        if (!finite) {
+            throw Error(SourceLoc{file_, 0, 0},
+                        "coordinates overflow after applying the transforms; expected finite "
+                        "numbers");
+        }
         fillFields(record, root);
         return record;
     }
