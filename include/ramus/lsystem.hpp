@@ -17,7 +17,7 @@ namespace ramus {
 /// 12 bytes; parameterless modules cost no parameter storage.
 struct Module {
     std::uint32_t symbol = 0;       ///< index into SymbolTable::names
-    std::uint32_t paramOffset = 0;  ///< first parameter in ModuleString::params
+    std::uint32_t paramOffset = 0;  ///< first parameter in ModuleString::params; 0 if none
     std::uint16_t paramCount = 0;
     std::uint16_t reserved = 0;
 };
@@ -89,7 +89,9 @@ struct DeriveOptions {
     int derivations = -1;  ///< -1 = use LSystemSettings::derivations
     bool overrideSeed = false;
     std::uint64_t seed = 0;               ///< used when overrideSeed
-    std::size_t maxModules = 50'000'000;  ///< stop with Error when a word would exceed it
+    /// Stop with Error when a word would exceed it. Parameter values are limited to 4 × this,
+    /// and a word to 2^32 − 2 modules whatever is set here.
+    std::size_t maxModules = 50'000'000;
 };
 
 /// Derives the word after n parallel rewriting steps (0 steps = the axiom). Deterministic for

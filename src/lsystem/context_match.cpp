@@ -13,74 +13,72 @@ ContextMatcher::ContextMatcher(const CompiledRules& rules) : rules_(rules) {
 }
 
 void ContextMatcher::build(const ModuleString& word) {
+    if (rules_.hasLeftContext) buildPrev(word);
+    if (rules_.hasRightContext) buildNext(word);
+    if (rules_.hasRightBrackets) buildBrackets(word);
+}
+
+void ContextMatcher::buildPrev(const ModuleString& word) {
+    // Forward: `cur` is the nearest kept module on the path to the root before i; a `[` saves
+    // it for the partner `]`, which restores it (so complete branches are skipped).
     const auto n = static_cast<std::uint32_t>(word.modules.size());
-    const Module* mods = word.modules.data();
-    const std::uint8_t* ignored = rules_.ignored.data();
-    const std::uint32_t open = rules_.openSymbol;
-    const std::uint32_t close = rules_.closeSymbol;
-    if (rules_.hasLeftContext) {
-        // Forward: `cur` is the nearest kept module on the path to the root before i.
-        prev_.resize(n);
-        stack_.clear();
-        std::uint32_t cur = kNoIndex;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            prev_[i] = cur;
-            std::uint32_t s = mods[i].symbol;
-            if (s == open) {
-                stack_.push_back(cur);
-            } else if (s == close) {
-                if (!stack_.empty()) {
-                    cur = stack_.back();
-                    stack_.pop_back();
-                } else {
-                    cur = kNoIndex;
-                }
-            } else if (!ignored[s]) {
-                cur = i;
-            }
+    prev_.resize(n);
+    stack_.clear();
+    std::uint32_t cur = kNoIndex;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        prev_[i] = cur;
+        std::uint32_t s = word.modules[i].symbol;
+        if (s == rules_.openSymbol) {
+            stack_.push_back(cur);
+        } else if (s == rules_.closeSymbol) {
+            cur = stack_.empty() ? kNoIndex : stack_.back();
+            if (!stack_.empty()) stack_.pop_back();
+        } else if (!rules_.ignored[s]) {
+            cur = i;
         }
     }
-    if (rules_.hasRightContext) {
-        // Backward: `cur` is the next kept module (or `]`) on the same axis after i.
-        next_.resize(n);
-        stack_.clear();
-        std::uint32_t cur = kNoIndex;
-        for (std::uint32_t i = n; i-- > 0;) {
-            next_[i] = cur;
-            std::uint32_t s = mods[i].symbol;
-            if (s == close) {
-                stack_.push_back(cur);
-                cur = i;
-            } else if (s == open) {
-                if (!stack_.empty()) {
-                    cur = stack_.back();
-                    stack_.pop_back();
-                } else {
-                    cur = kNoIndex;
-                }
-            } else if (!ignored[s]) {
-                cur = i;
-            }
+}
+
+void ContextMatcher::buildNext(const ModuleString& word) {
+    // Backward: `cur` is the next kept module (or `]`) on the same axis after i; a `]` saves
+    // it for the partner `[`, which restores it (so lateral branches are skipped).
+    const auto n = static_cast<std::uint32_t>(word.modules.size());
+    next_.resize(n);
+    stack_.clear();
+    std::uint32_t cur = kNoIndex;
+    for (std::uint32_t i = n; i-- > 0;) {
+        next_[i] = cur;
+        std::uint32_t s = word.modules[i].symbol;
+        if (s == rules_.closeSymbol) {
+            stack_.push_back(cur);
+            cur = i;
+        } else if (s == rules_.openSymbol) {
+            cur = stack_.empty() ? kNoIndex : stack_.back();
+            if (!stack_.empty()) stack_.pop_back();
+        } else if (!rules_.ignored[s]) {
+            cur = i;
         }
     }
-    if (rules_.hasRightBrackets) {
-        nextKept_.resize(n);
-        std::uint32_t cur = kNoIndex;
-        for (std::uint32_t i = n; i-- > 0;) {
-            nextKept_[i] = cur;
-            if (!ignored[mods[i].symbol]) cur = i;
-        }
-        match_.assign(n, kNoIndex);
-        stack_.clear();
-        for (std::uint32_t i = 0; i < n; ++i) {
-            std::uint32_t s = mods[i].symbol;
-            if (s == open) {
-                stack_.push_back(i);
-            } else if (s == close && !stack_.empty()) {
-                match_[stack_.back()] = i;
-                match_[i] = stack_.back();
-                stack_.pop_back();
-            }
+}
+
+void ContextMatcher::buildBrackets(const ModuleString& word) {
+    const auto n = static_cast<std::uint32_t>(word.modules.size());
+    nextKept_.resize(n);
+    std::uint32_t cur = kNoIndex;
+    for (std::uint32_t i = n; i-- > 0;) {
+        nextKept_[i] = cur;
+        if (!rules_.ignored[word.modules[i].symbol]) cur = i;
+    }
+    match_.assign(n, kNoIndex);
+    stack_.clear();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        std::uint32_t s = word.modules[i].symbol;
+        if (s == rules_.openSymbol) {
+            stack_.push_back(i);
+        } else if (s == rules_.closeSymbol && !stack_.empty()) {
+            match_[stack_.back()] = i;
+            match_[i] = stack_.back();
+            stack_.pop_back();
         }
     }
 }

@@ -38,6 +38,10 @@ public:
     bool matchRight(const Rule& rule, const ModuleString& word, std::uint32_t index, double* slots);
 
 private:
+    void buildPrev(const ModuleString& word);
+    void buildNext(const ModuleString& word);
+    void buildBrackets(const ModuleString& word);
+
     const CompiledRules& rules_;
     std::vector<std::uint32_t> prev_;
     std::vector<std::uint32_t> next_;

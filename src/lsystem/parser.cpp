@@ -288,46 +288,49 @@ void LSystemParser::parseSymbolList(const TextLine& line, std::size_t pos, bool 
 void LSystemParser::parseHeader(const TextLine& line, std::size_t colon) {
     std::string_view t = line.text;
     std::size_t keyPos = skipSpaces(t, 0);
-    std::string keyText = headerKey(t, colon);
-    std::string_view key = keyText;
+    std::string key = headerKey(t, colon);
     std::size_t valuePos = skipSpaces(t, colon + 1);
     bool known = isDerivationsKey(key) || isKey(key, "axiom") || isKey(key, "angle") ||
                  isKey(key, "step") || isKey(key, "seed") || isKey(key, "tropism") ||
                  isKey(key, "tropism_mode") || isKey(key, "width");
     if (!known) {
         if (looksLikeKey(key)) {
-            line.fail(keyPos, "unknown header '" + std::string(key) + "'; expected one of " +
-                                  kHeaderKeys + ", or a production 'predecessor -> successor'");
+            line.fail(keyPos, "unknown header '" + key + "'; expected one of " + kHeaderKeys +
+                                  ", or a production 'predecessor -> successor'");
         }
         line.fail(trimSpaces(t).size() + keyPos,
                   "missing '->'; expected a production 'predecessor -> successor'");
     }
-    std::string canonical = isDerivationsKey(key) ? "derivations" : std::string(key);
+    std::string canonical = isDerivationsKey(key) ? "derivations" : key;
     auto [it, inserted] = headerLines_.emplace(canonical, line.number);
     if (!inserted) {
         line.fail(keyPos, "'" + canonical + ":' is given twice (first on line " +
                               std::to_string(it->second) + "); expected it once");
     }
     if (valuePos >= t.size()) {
-        line.fail(valuePos, "missing value after '" + std::string(key) + ":'; expected " +
+        line.fail(valuePos, "missing value after '" + key + ":'; expected " +
                                 (key == "axiom" ? "a word of modules" : "a value"));
     }
-    LSystemSettings& s = system_.settings;
     if (canonical == "axiom") return parseAxiom(line, valuePos);
     if (canonical == "tropism") return parseTropism(line, valuePos);
     if (canonical == "tropism_mode") {
         std::string_view mode = trimSpaces(t.substr(valuePos));
-        if (mode == "rotate") {
-            s.tropismMode = TropismMode::Rotate;
-        } else if (mode == "blend") {
-            s.tropismMode = TropismMode::Blend;
-        } else {
+        if (mode != "rotate" && mode != "blend") {
             line.fail(valuePos,
                       "unknown tropism mode '" + std::string(mode) + "'; expected rotate or blend");
         }
+        system_.settings.tropismMode = mode == "rotate" ? TropismMode::Rotate : TropismMode::Blend;
         return;
     }
-    if (canonical == "seed") {
+    parseNumericHeader(line, canonical, valuePos);
+}
+
+void LSystemParser::parseNumericHeader(const TextLine& line, const std::string& key,
+                                       std::size_t valuePos) {
+    LSystemSettings& s = system_.settings;
+    std::string_view t = line.text;
+    if (key == "seed") {
+        // Whole seeds are read exactly (all 64 bits); expressions go through doubles below.
         std::string_view digits = trimSpaces(t.substr(valuePos));
         if (std::all_of(digits.begin(), digits.end(), isDigitChar)) {
             auto res = std::from_chars(digits.data(), digits.data() + digits.size(), s.seed);
@@ -338,24 +341,24 @@ void LSystemParser::parseHeader(const TextLine& line, std::size_t colon) {
         }
     }
     double v = constantValue(line, valuePos, t.size(), "in a header");
-    if (canonical == "derivations" || canonical == "seed") {
-        double limit = canonical == "seed" ? 9007199254740992.0 : double(INT_MAX);
+    if (key == "derivations" || key == "seed") {
+        double limit = key == "seed" ? 9007199254740992.0 : double(INT_MAX);
         if (v < 0 || v != std::floor(v) || v > limit) {
             line.fail(valuePos,
-                      canonical + " must be a whole number from 0 to " +
-                          (canonical == "seed" ? std::string("2^53") : std::to_string(INT_MAX)) +
+                      key + " must be a whole number from 0 to " +
+                          (key == "seed" ? std::string("2^53") : std::to_string(INT_MAX)) +
                           "; got " + std::to_string(v));
         }
-        if (canonical == "seed") {
+        if (key == "seed") {
             s.seed = static_cast<std::uint64_t>(v);
         } else {
             s.derivations = static_cast<int>(v);
         }
-    } else if (canonical == "angle") {
+    } else if (key == "angle") {
         s.angleDegrees = v;
-    } else if (canonical == "step") {
+    } else if (key == "step") {
         s.step = v;
-    } else if (canonical == "width") {
+    } else if (key == "width") {
         if (v < 0) line.fail(valuePos, "width must be >= 0; got " + std::to_string(v));
         s.width = v;
     }

@@ -48,6 +48,7 @@ private:
     void parseModuleDeclaration(const TextLine& line, std::size_t pos);
     void parseSymbolList(const TextLine& line, std::size_t pos, bool consider);
     void parseHeader(const TextLine& line, std::size_t colon);
+    void parseNumericHeader(const TextLine& line, const std::string& key, std::size_t valuePos);
     void parseAxiom(const TextLine& line, std::size_t pos);
     void parseTropism(const TextLine& line, std::size_t pos);
     double constantValue(const TextLine& line, std::size_t begin, std::size_t end,
@@ -71,6 +72,12 @@ private:
     void parseProduction(const TextLine& line, std::size_t arrow, std::size_t arrowLength);
     void parsePredecessor(const TextLine& line, std::size_t end, Rule& rule,
                           std::vector<std::string>& formals);
+    std::pair<std::size_t, std::size_t> findContextMarkers(const TextLine& line,
+                                                           std::size_t end) const;
+    void parseLeftContext(const TextLine& line, std::size_t lt, Rule& rule,
+                          std::vector<std::string>& formals, std::vector<std::size_t>& offsets);
+    void parseRightContext(const TextLine& line, std::size_t gt, std::size_t end, Rule& rule,
+                           std::vector<std::string>& formals, std::vector<std::size_t>& offsets);
     void addPattern(const TextLine& line, const std::vector<WordModule>& word,
                     std::vector<std::string>& formals, std::vector<std::size_t>& formalOffsets,
                     bool isContext);

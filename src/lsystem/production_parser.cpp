@@ -65,19 +65,7 @@ void LSystemParser::parseProduction(const TextLine& line, std::size_t arrow,
 void LSystemParser::parsePredecessor(const TextLine& line, std::size_t end, Rule& rule,
                                      std::vector<std::string>& formals) {
     std::string_view t = line.text;
-    std::size_t lt = findTopLevel(t, 0, end, '<');
-    std::size_t gt = findTopLevel(t, 0, end, '>');
-    if (lt != kNpos && findTopLevel(t, lt + 1, end, '<') != kNpos) {
-        line.fail(findTopLevel(t, lt + 1, end, '<'),
-                  "second '<' in the predecessor; expected 'left < predecessor > right'");
-    }
-    if (gt != kNpos && findTopLevel(t, gt + 1, end, '>') != kNpos) {
-        line.fail(findTopLevel(t, gt + 1, end, '>'),
-                  "second '>' in the predecessor; expected 'left < predecessor > right'");
-    }
-    if (lt != kNpos && gt != kNpos && gt < lt) {
-        line.fail(gt, "'>' before '<'; expected 'left < predecessor > right'");
-    }
+    auto [lt, gt] = findContextMarkers(line, end);
     std::size_t predBegin = lt == kNpos ? 0 : lt + 1;
     std::size_t predEnd = gt == kNpos ? end : gt;
     auto pred = parseWord(line, predBegin, predEnd, WordMode::Pattern, nullptr);
@@ -102,47 +90,76 @@ void LSystemParser::parsePredecessor(const TextLine& line, std::size_t end, Rule
     addPattern(line, pred, formals, offsets, false);
 
     // cpfg/ABOP write `*` for "any context": `* < A > * -> B` is the same as `A -> B`.
-    auto& patterns = rules_->patterns;
-    if (lt != kNpos && trimSpaces(t.substr(0, lt)) == "*") lt = kNpos;
-    if (gt != kNpos && trimSpaces(t.substr(gt + 1, end - gt - 1)) == "*") gt = kNpos;
-    if (lt != kNpos) {
-        auto left = parseWord(line, 0, lt, WordMode::Pattern, nullptr);
-        if (left.empty()) line.fail(lt, "empty left context; expected modules before '<'");
-        for (const auto& m : left) {
-            if (m.symbol == rules_->openSymbol || m.symbol == rules_->closeSymbol) {
-                line.fail(m.offset,
-                          "brackets are not allowed in a left context (branches are "
-                          "skipped there); expected modules");
-            }
-        }
-        rule.leftBegin = static_cast<std::uint32_t>(patterns.size());
-        addPattern(line, left, formals, offsets, true);
-        rule.leftEnd = static_cast<std::uint32_t>(patterns.size());
-        rules_->hasLeftContext = true;
+    if (lt != kNpos && trimSpaces(t.substr(0, lt)) != "*") {
+        parseLeftContext(line, lt, rule, formals, offsets);
     }
-    if (gt != kNpos) {
-        auto right = parseWord(line, gt + 1, end, WordMode::Pattern, nullptr);
-        if (right.empty()) line.fail(gt, "empty right context; expected modules after '>'");
-        checkBrackets(line, right, "right context");
-        rule.rightBegin = static_cast<std::uint32_t>(patterns.size());
-        addPattern(line, right, formals, offsets, true);
-        rule.rightEnd = static_cast<std::uint32_t>(patterns.size());
-        rules_->hasRightContext = true;
-        int depth = 0;
-        for (const auto& m : right) {
-            if (m.symbol == rules_->openSymbol) {
-                rules_->hasRightBrackets = true;
-                depth++;
-                rules_->maxRightDepth =
-                    std::max(rules_->maxRightDepth, static_cast<std::uint16_t>(depth));
-            } else if (m.symbol == rules_->closeSymbol) {
-                depth--;
-            }
-        }
+    if (gt != kNpos && trimSpaces(t.substr(gt + 1, end - gt - 1)) != "*") {
+        parseRightContext(line, gt, end, rule, formals, offsets);
     }
     if (formals.size() > 65535) line.fail(0, "too many formal parameters; expected at most 65535");
     rule.slotCount = static_cast<std::uint16_t>(formals.size());
     rules_->maxSlots = std::max(rules_->maxSlots, rule.slotCount);
+}
+
+std::pair<std::size_t, std::size_t> LSystemParser::findContextMarkers(const TextLine& line,
+                                                                      std::size_t end) const {
+    std::string_view t = line.text;
+    std::size_t lt = findTopLevel(t, 0, end, '<');
+    std::size_t gt = findTopLevel(t, 0, end, '>');
+    if (lt != kNpos && findTopLevel(t, lt + 1, end, '<') != kNpos) {
+        line.fail(findTopLevel(t, lt + 1, end, '<'),
+                  "second '<' in the predecessor; expected 'left < predecessor > right'");
+    }
+    if (gt != kNpos && findTopLevel(t, gt + 1, end, '>') != kNpos) {
+        line.fail(findTopLevel(t, gt + 1, end, '>'),
+                  "second '>' in the predecessor; expected 'left < predecessor > right'");
+    }
+    if (lt != kNpos && gt != kNpos && gt < lt) {
+        line.fail(gt, "'>' before '<'; expected 'left < predecessor > right'");
+    }
+    return {lt, gt};
+}
+
+void LSystemParser::parseLeftContext(const TextLine& line, std::size_t lt, Rule& rule,
+                                     std::vector<std::string>& formals,
+                                     std::vector<std::size_t>& offsets) {
+    auto left = parseWord(line, 0, lt, WordMode::Pattern, nullptr);
+    if (left.empty()) line.fail(lt, "empty left context; expected modules before '<'");
+    for (const auto& m : left) {
+        if (m.symbol == rules_->openSymbol || m.symbol == rules_->closeSymbol) {
+            line.fail(m.offset,
+                      "brackets are not allowed in a left context (branches are skipped "
+                      "there); expected modules");
+        }
+    }
+    rule.leftBegin = static_cast<std::uint32_t>(rules_->patterns.size());
+    addPattern(line, left, formals, offsets, true);
+    rule.leftEnd = static_cast<std::uint32_t>(rules_->patterns.size());
+    rules_->hasLeftContext = true;
+}
+
+void LSystemParser::parseRightContext(const TextLine& line, std::size_t gt, std::size_t end,
+                                      Rule& rule, std::vector<std::string>& formals,
+                                      std::vector<std::size_t>& offsets) {
+    auto right = parseWord(line, gt + 1, end, WordMode::Pattern, nullptr);
+    if (right.empty()) line.fail(gt, "empty right context; expected modules after '>'");
+    checkBrackets(line, right, "right context");
+    rule.rightBegin = static_cast<std::uint32_t>(rules_->patterns.size());
+    addPattern(line, right, formals, offsets, true);
+    rule.rightEnd = static_cast<std::uint32_t>(rules_->patterns.size());
+    rules_->hasRightContext = true;
+    // The matcher keeps a stack of entered branches as deep as the deepest pattern.
+    int depth = 0;
+    for (const auto& m : right) {
+        if (m.symbol == rules_->openSymbol) {
+            rules_->hasRightBrackets = true;
+            ++depth;
+            rules_->maxRightDepth =
+                std::max(rules_->maxRightDepth, static_cast<std::uint16_t>(depth));
+        } else if (m.symbol == rules_->closeSymbol) {
+            --depth;
+        }
+    }
 }
 
 void LSystemParser::addPattern(const TextLine& line, const std::vector<WordModule>& word,
