@@ -88,7 +88,7 @@ LSystem loadLSystem(const std::string& path, const ParseOptions& options = {});
 struct DeriveOptions {
     int derivations = -1;  ///< -1 = use LSystemSettings::derivations
     bool overrideSeed = false;
-    std::uint64_t seed = 0;               ///< used when overrideSeed
+    std::uint64_t seed = 0;  ///< used when overrideSeed
     /// Stop with Error when a word would exceed it. Parameter values are limited to 4 × this,
     /// and a word to 2^32 − 2 modules whatever is set here.
     std::size_t maxModules = 50'000'000;
