@@ -128,6 +128,38 @@ void EarClipper::triangulate(std::uint32_t base, double eps, std::vector<std::ui
     }
 }
 
+// Appends one polygon's vertices (flat normal, tangent, UVs over its bounds in the plane frame)
+// and its ear-clipped triangles.
+void appendPolygon(std::span<const Vec3> poly, const PolygonFrame& frame, EarClipper& clipper,
+                   Mesh& mesh) {
+    // Plane coordinates (u along tangent, v along bitangent) and their bounds.
+    clipper.points.clear();
+    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
+    Vec2 hi = -lo;
+    for (const Vec3& q : poly) {
+        const Vec3 d = q - poly[0];
+        const Vec2 xy(d.dot(frame.tangent), d.dot(frame.bitangent));
+        clipper.points.push_back(xy);
+        lo = lo.cwiseMin(xy);
+        hi = hi.cwiseMax(xy);
+    }
+    const Vec2 size = (hi - lo).cwiseMax(Vec2::Constant(1e-300));
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    const Vec3f normal = frame.normal.cast<float>();
+    const Vec4f tangent(static_cast<float>(frame.tangent.x()),
+                        static_cast<float>(frame.tangent.y()),
+                        static_cast<float>(frame.tangent.z()), 1.0f);
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vec2& xy = clipper.points[i];
+        mesh.positions.push_back(poly[i].cast<float>());
+        mesh.normals.push_back(normal);
+        mesh.tangents.push_back(tangent);
+        mesh.uvs.emplace_back(static_cast<float>((xy.x() - lo.x()) / size.x()),
+                              static_cast<float>((hi.y() - xy.y()) / size.y()));
+    }
+    clipper.triangulate(base, 1e-12 * size.squaredNorm(), mesh.indices);
+}
+
 }  // namespace
 
 Mesh buildPolygonMesh(std::span<const Vec3> vertices, std::span<const std::uint32_t> offsets,
@@ -151,32 +183,7 @@ Mesh buildPolygonMesh(std::span<const Vec3> vertices, std::span<const std::uint3
         PolygonFrame frame;
         if (!polygonFrame(poly, frame)) continue;
 
-        // Plane coordinates (u along tangent, v along bitangent) and their bounds.
-        clipper.points.clear();
-        Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
-        Vec2 hi = -lo;
-        for (const Vec3& q : poly) {
-            const Vec3 d = q - poly[0];
-            const Vec2 xy(d.dot(frame.tangent), d.dot(frame.bitangent));
-            clipper.points.push_back(xy);
-            lo = lo.cwiseMin(xy);
-            hi = hi.cwiseMax(xy);
-        }
-        const Vec2 size = (hi - lo).cwiseMax(Vec2::Constant(1e-300));
-        const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-        const Vec3f normal = frame.normal.cast<float>();
-        const Vec4f tangent(static_cast<float>(frame.tangent.x()),
-                            static_cast<float>(frame.tangent.y()),
-                            static_cast<float>(frame.tangent.z()), 1.0f);
-        for (std::size_t i = 0; i < poly.size(); ++i) {
-            const Vec2& xy = clipper.points[i];
-            mesh.positions.push_back(poly[i].cast<float>());
-            mesh.normals.push_back(normal);
-            mesh.tangents.push_back(tangent);
-            mesh.uvs.emplace_back(static_cast<float>((xy.x() - lo.x()) / size.x()),
-                                  static_cast<float>((hi.y() - xy.y()) / size.y()));
-        }
-        clipper.triangulate(base, 1e-12 * size.squaredNorm(), mesh.indices);
+        appendPolygon(poly, frame, clipper, mesh);
     }
     if (!mesh.indices.empty()) {
         Material sheet = material;
