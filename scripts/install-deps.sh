@@ -6,11 +6,15 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config clang clang-format
           libeigen3-dev nlohmann-json3-dev libcli11-dev libcpp-httplib-dev libnanoflann-dev
-          libstb-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev nodejs npm)
+          libstb-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Node.js may come from another source (e.g. NodeSource, which bundles npm): only the commands
+# matter, so Debian's packages are installed only when they are missing.
+command -v node >/dev/null 2>&1 || missing+=(nodejs)
+command -v npm >/dev/null 2>&1 || missing+=(npm)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
   sudo=""
