@@ -24,6 +24,7 @@ struct PcaOptions {
     double jitter = 1.0;
     std::string example;
     bool vary = false;
+    std::string spread = "model";
 };
 
 SkeletonStats loadStats(const PcaOptions& o) {
@@ -161,7 +162,8 @@ void runSample(const PcaOptions& o) {
         if (!o.example.empty()) {
             point = o.vary ? stats.vary(example, rng) : example;
         } else {
-            point = model.sample(rng);
+            point = model.sample(rng,
+                                 o.spread == "thesis" ? SampleSpread::Thesis : SampleSpread::Model);
         }
         out.push_back(pointJson(point));
     }
@@ -197,6 +199,11 @@ void addPcaCommand(CLI::App& app) {
         ->capture_default_str();
     sample->add_option("--example", o->example, "the feature point of a species (by name)");
     sample->add_flag("--vary", o->vary, "with --example: variations N(q_i, lambda_i/2)");
+    sample
+        ->add_option("--spread", o->spread,
+                     "model: q_i ~ N(0, lambda_i) (default); thesis: q_i = lambda_i N(0, 1), as "
+                     "the thesis's implementation (closer to the mean)")
+        ->check(CLI::IsMember({"model", "thesis"}));
     sample->add_flag("--pretty", o->json, "indent the JSON");
     sample->callback([o] { runSample(*o); });
 }

@@ -56,6 +56,16 @@ Eigen::VectorXd toFeaturePoint(const SkeletonFeatures& features);
 /// wings −0.05 or a slightly negative limb length); the generator interprets them.
 SkeletonFeatures fromFeaturePoint(const Eigen::VectorXd& point);
 
+/// How far random points spread along the principal axes.
+enum class SampleSpread {
+    /// qᵢ ~ N(0, λᵢ): the model the thesis describes (seed 000 §3.5, SPEC §E). Default.
+    Model,
+    /// qᵢ = λᵢ·N(0, 1): what the thesis's implementation does (standard deviation λᵢ instead of
+    /// √λᵢ), which keeps points much closer to the mean — its figures of random and
+    /// conditioned skeletons (e.g. fig. 4.12) were made this way.
+    Thesis,
+};
+
 /// A condition on one feature (seed 000 §4.5, §6.1): the feature is fixed to
 /// value + U(−jitter/2, jitter/2), in the feature's user unit (px, pairs, kg).
 struct Condition {
@@ -95,9 +105,9 @@ struct ConditionalModel {
     Eigen::MatrixXd eigenvectors;
 
     /// Draws each condition's offset from U(−jitter/2, jitter/2) (in feature order), moves the
-    /// mean by gain·(b − b₀), then draws q ~ N(0, Λ̄) and maps it back: free features
-    /// μ̄ + V̄q, fixed features the offset values.
-    Eigen::VectorXd sample(Rng& rng) const;
+    /// mean by gain·(b − b₀), then draws q ~ N(0, Λ̄) (or per `spread`) and maps it back: free
+    /// features μ̄ + V̄q, fixed features the offset values.
+    Eigen::VectorXd sample(Rng& rng, SampleSpread spread = SampleSpread::Model) const;
 };
 
 /// The PCA model of a species set.
@@ -138,8 +148,9 @@ public:
     /// μ + s·√λᵢ·vᵢ: the point at s standard deviations along axis i (seed 000 fig. 4.10).
     Eigen::VectorXd axisPoint(int axis, double sigmas) const;
 
-    /// A random skeleton: qᵢ ~ N(0, λᵢ) independently, mapped back (seed 000 §3.5, §5.1).
-    Eigen::VectorXd sample(Rng& rng) const;
+    /// A random skeleton: qᵢ ~ N(0, λᵢ) independently (or per `spread`), mapped back (seed 000
+    /// §3.5, §5.1).
+    Eigen::VectorXd sample(Rng& rng, SampleSpread spread = SampleSpread::Model) const;
     /// The conditional model for the conditions. Throws Error for a feature index out of
     /// range, a feature conditioned twice, a non-finite value or jitter, or an impossible
     /// condition: a value (or a random offset) in a direction the data never varies in, e.g.
@@ -147,8 +158,9 @@ public:
     /// truncated pseudo-inverse. No conditions = the unconditioned model. To draw many samples
     /// under the same conditions, call this once and ConditionalModel::sample repeatedly.
     ConditionalModel condition(const std::vector<Condition>& conditions) const;
-    /// condition(conditions).sample(rng).
-    Eigen::VectorXd sampleConditioned(const std::vector<Condition>& conditions, Rng& rng) const;
+    /// condition(conditions).sample(rng, spread).
+    Eigen::VectorXd sampleConditioned(const std::vector<Condition>& conditions, Rng& rng,
+                                      SampleSpread spread = SampleSpread::Model) const;
     /// The feature point of a species, by English or German name (case-insensitive). Throws
     /// Error listing the known names when there is no such species.
     Eigen::VectorXd fromExample(std::string_view name) const;
@@ -208,8 +220,9 @@ PcaReport makePcaReport(const SkeletonStats& stats);
 
 /// Writes the diagnostic figures as SVG files into `directory` (created if needed) and returns
 /// their paths: Q-Q plots per feature and per principal axis, projections onto the first two
-/// axes coloured by class, wings and legs, the eigenvalue spectrum, the mean skeleton, and
-/// skeletons at ±1σ along each of the first 6 axes. Throws Error when a file cannot be written.
+/// axes coloured by class, wings and legs, the eigenvalue spectrum, the mean skeleton,
+/// skeletons at ±1σ along each of the first 6 axes, all species, and conditionally sampled
+/// spines (wings = 0, legs = 1; fixed seed). Throws Error when a file cannot be written.
 std::vector<std::string> writePcaPlots(const SkeletonStats& stats, const std::string& directory);
 
 }  // namespace ramus

@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include "ramus/skeleton_stats.hpp"
+
 namespace ramus::detail {
 
 /// Eigenvalues (descending, clamped to ≥ 0) and unit eigenvectors (columns, same order, each
@@ -13,5 +15,9 @@ struct SortedEigen {
     Eigen::MatrixXd vectors;
 };
 SortedEigen decomposeSymmetric(const Eigen::MatrixXd& matrix);
+
+/// One random PCA coordinate for an axis with eigenvalue λ: N(0, λ) for SampleSpread::Model,
+/// λ·N(0, 1) for SampleSpread::Thesis.
+double sampleCoordinate(Rng& rng, double eigenvalue, SampleSpread spread);
 
 }  // namespace ramus::detail

@@ -150,15 +150,23 @@ std::string limbMarkup(const SkeletonFeatures& f, int firstLimb, Vec2 start,
 
 }  // namespace
 
+namespace {
+
+// A nested viewport on the frame with a 10 % margin; the group inside flips y up.
+std::string frameOpen(double left, double top, double size) {
+    return "<svg x=\"" + fixed(left) + "\" y=\"" + fixed(top) + "\" width=\"" + fixed(size) +
+           "\" height=\"" + fixed(size) +
+           "\" viewBox=\"-100 -100 1200 1200\" overflow=\"hidden\">\n"
+           "<rect x=\"0\" y=\"0\" width=\"1000\" height=\"1000\" fill=\"#fafafa\" "
+           "stroke=\"#bbbbbb\" stroke-width=\"4\"/>\n"
+           "<g transform=\"matrix(1 0 0 -1 0 1000)\">\n";
+}
+
+}  // namespace
+
 void drawSkeleton(SvgDocument& doc, const SkeletonFeatures& f, double left, double top,
                   double size) {
-    // A nested viewport on the frame with a 10 % margin; the group flips y up.
-    std::string out = "<svg x=\"" + fixed(left) + "\" y=\"" + fixed(top) + "\" width=\"" +
-                      fixed(size) + "\" height=\"" + fixed(size) +
-                      "\" viewBox=\"-100 -100 1200 1200\" overflow=\"hidden\">\n"
-                      "<rect x=\"0\" y=\"0\" width=\"1000\" height=\"1000\" fill=\"#fafafa\" "
-                      "stroke=\"#bbbbbb\" stroke-width=\"4\"/>\n"
-                      "<g transform=\"matrix(1 0 0 -1 0 1000)\">\n";
+    std::string out = frameOpen(left, top, size);
     out += limbMarkup(f, 0, f.spine[3], "#9467bd");
     out += limbMarkup(f, 3, f.spine[6], "#ff7f0e");
     out += curveMarkup(f, 0, "#d62728");
@@ -167,6 +175,25 @@ void drawSkeleton(SvgDocument& doc, const SkeletonFeatures& f, double left, doub
     out += "<circle cx=\"" + fixed(f.spine[0].x(), 1) + "\" cy=\"" + fixed(f.spine[0].y(), 1) +
            "\" r=\"22\" fill=\"#d62728\"/>\n</g>\n</svg>\n";
     doc.raw(out);
+}
+
+void drawSpines(SvgDocument& doc, std::span<const SkeletonFeatures> skeletons, double left,
+                double top, double size) {
+    std::string out = frameOpen(left, top, size);
+    for (std::size_t i = 0; i < skeletons.size(); ++i) {
+        const auto& s = skeletons[i].spine;
+        std::string d = "M " + pointText(s[0]);
+        for (int first : {0, 3, 6}) {
+            d += " C " + pointText(s[first + 1]) + " " + pointText(s[first + 2]) + " " +
+                 pointText(s[first + 3]);
+        }
+        out += "<path d=\"" + d + "\" fill=\"none\" stroke=\"" +
+               std::string(categoryColour(static_cast<int>(i))) +
+               "\" stroke-width=\"8\" stroke-opacity=\"0.8\"/>\n";
+        out += "<circle cx=\"" + fixed(s[0].x(), 1) + "\" cy=\"" + fixed(s[0].y(), 1) +
+               "\" r=\"14\" fill=\"" + std::string(categoryColour(static_cast<int>(i))) + "\"/>\n";
+    }
+    doc.raw(out + "</g>\n</svg>\n");
 }
 
 }  // namespace ramus::detail

@@ -3,6 +3,7 @@
 // files are byte-identical across runs.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,6 +58,11 @@ std::string fixed(double value, int decimals = 2);
 /// of the page, which shows the 1000×1000 frame (y up) with a margin.
 void drawSkeleton(SvgDocument& doc, const SkeletonFeatures& features, double left, double top,
                   double size);
+
+/// Draws only the spines of several skeletons (one colour each, head as a dot) into one cell,
+/// like drawSkeleton.
+void drawSpines(SvgDocument& doc, std::span<const SkeletonFeatures> skeletons, double left,
+                double top, double size);
 
 /// Distinct colours for categories (index modulo the palette size).
 std::string_view categoryColour(int index);

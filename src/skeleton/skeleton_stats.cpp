@@ -42,6 +42,11 @@ SortedEigen decomposeSymmetric(const Eigen::MatrixXd& matrix) {
     }
     return result;
 }
+
+double sampleCoordinate(Rng& rng, double eigenvalue, SampleSpread spread) {
+    const double deviation = spread == SampleSpread::Model ? std::sqrt(eigenvalue) : eigenvalue;
+    return rng.gauss(0.0, deviation);
+}
 }  // namespace detail
 
 std::string featureName(int feature) {
@@ -176,15 +181,17 @@ Eigen::VectorXd SkeletonStats::axisPoint(int axis, double sigmas) const {
     return mean_ + sigmas * std::sqrt(eigenvalues_[axis]) * eigenvectors_.col(axis);
 }
 
-Eigen::VectorXd SkeletonStats::sample(Rng& rng) const {
+Eigen::VectorXd SkeletonStats::sample(Rng& rng, SampleSpread spread) const {
     Eigen::VectorXd q(kFeatureCount);
-    for (int i = 0; i < kFeatureCount; ++i) q[i] = rng.gauss(0.0, std::sqrt(eigenvalues_[i]));
+    for (int i = 0; i < kFeatureCount; ++i) {
+        q[i] = detail::sampleCoordinate(rng, eigenvalues_[i], spread);
+    }
     return reconstruct(q);
 }
 
-Eigen::VectorXd SkeletonStats::sampleConditioned(const std::vector<Condition>& conditions,
-                                                 Rng& rng) const {
-    return condition(conditions).sample(rng);
+Eigen::VectorXd SkeletonStats::sampleConditioned(const std::vector<Condition>& conditions, Rng& rng,
+                                                 SampleSpread spread) const {
+    return condition(conditions).sample(rng, spread);
 }
 
 Eigen::VectorXd SkeletonStats::fromExample(std::string_view name) const {

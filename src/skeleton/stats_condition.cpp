@@ -147,7 +147,7 @@ ConditionalModel SkeletonStats::condition(const std::vector<Condition>& conditio
     return model;
 }
 
-Eigen::VectorXd ConditionalModel::sample(Rng& rng) const {
+Eigen::VectorXd ConditionalModel::sample(Rng& rng, SampleSpread spread) const {
     Eigen::VectorXd point = mean;
     // The fixed values with their random offsets, and the mean shift they cause.
     Eigen::VectorXd delta(conditions.size());
@@ -164,7 +164,8 @@ Eigen::VectorXd ConditionalModel::sample(Rng& rng) const {
     const Eigen::Index n = eigenvalues.size();
     if (n == 0) return point;
     Eigen::VectorXd q(n);
-    for (Eigen::Index i = 0; i < n; ++i) q[i] = rng.gauss(0.0, std::sqrt(eigenvalues[i]));
+    for (Eigen::Index i = 0; i < n; ++i)
+        q[i] = detail::sampleCoordinate(rng, eigenvalues[i], spread);
     const Eigen::VectorXd shift = eigenvectors * q;
     for (std::size_t k = 0; k < freeFeatures.size(); ++k) point[freeFeatures[k]] += shift[k];
     return point;

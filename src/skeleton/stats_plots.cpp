@@ -199,6 +199,39 @@ std::string axesSigma(const SkeletonStats& s) {
     return doc.finish();
 }
 
+// Seed 000 fig. 4.12: ten conditionally sampled spines each for wings = 0 exactly, wings = 0
+// with the random offset, and one pair of legs with the offset (fixed seed); the top row with
+// the model's spread, the bottom row with the thesis implementation's (SampleSpread::Thesis).
+std::string conditionedSpines(const SkeletonStats& s) {
+    constexpr double kSize = 320;
+    SvgDocument doc(3 * kSize + 40, 2 * (kSize + 50) + 60);
+    doc.text((3 * kSize + 40) / 2, 24, "Ten conditionally sampled spines each (seed 000 fig. 4.12)",
+             15, "middle");
+    const std::vector<std::pair<std::string, Condition>> panels = {
+        {"wings = 0 (exact)", Condition{kFeatureWings, 0.0, 0.0}},
+        {"wings = 0 + U(-0.5, 0.5)", Condition::wings(0.0)},
+        {"legs = 1 pair + U(-0.5, 0.5)", Condition::legs(1.0)},
+    };
+    for (int row = 0; row < 2; ++row) {
+        const SampleSpread spread = row == 0 ? SampleSpread::Model : SampleSpread::Thesis;
+        const double top = 45 + row * (kSize + 50);
+        for (std::size_t p = 0; p < panels.size(); ++p) {
+            const ConditionalModel model = s.condition({panels[p].second});
+            std::vector<SkeletonFeatures> spines;
+            for (std::uint64_t i = 0; i < 10; ++i) {
+                Rng rng = Rng::forStream(2020, i);
+                spines.push_back(fromFeaturePoint(model.sample(rng, spread)));
+            }
+            const double left = 20 + static_cast<double>(p) * kSize;
+            detail::drawSpines(doc, spines, left, top, kSize - 10);
+            doc.text(left + kSize / 2 - 5, top + kSize + 10,
+                     panels[p].first + (row == 0 ? ", q ~ N(0, lambda)" : ", q = lambda N(0, 1)"),
+                     11, "middle");
+        }
+    }
+    return doc.finish();
+}
+
 std::string speciesGrid(const SkeletonStats& s) {
     constexpr int kCols = 8;
     constexpr double kSize = 150;
@@ -238,6 +271,7 @@ std::vector<std::string> writePcaPlots(const SkeletonStats& stats, const std::st
         {"mean_skeleton.svg", meanSkeleton(stats)},
         {"axes_sigma.svg", axesSigma(stats)},
         {"species.svg", speciesGrid(stats)},
+        {"conditioned_spines.svg", conditionedSpines(stats)},
     };
     std::vector<std::string> written;
     for (const auto& [name, content] : files) {

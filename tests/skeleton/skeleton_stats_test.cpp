@@ -230,6 +230,21 @@ TEST(SkeletonStats, SamplesMatchTheModelMeanAndCovariance) {
     }
 }
 
+TEST(SkeletonStats, ThesisSpreadUsesTheEigenvalueAsStandardDeviation) {
+    const SkeletonStats& s = thesisModel();
+    Rng rng(99);
+    constexpr int kDraws = 100000;
+    Eigen::VectorXd sumSq = Eigen::VectorXd::Zero(29);
+    for (int i = 0; i < kDraws; ++i) {
+        const Eigen::VectorXd q = s.project(s.sample(rng, SampleSpread::Thesis));
+        sumSq += q.cwiseProduct(q);
+    }
+    for (int i = 0; i < 7; ++i) {
+        const double expected = s.eigenvalues()[i] * s.eigenvalues()[i];  // (λᵢ)² variance
+        EXPECT_NEAR(sumSq[i] / kDraws, expected, 5 * expected * std::sqrt(2.0 / kDraws));
+    }
+}
+
 TEST(SkeletonStats, SamplingIsDeterministicForASeed) {
     const SkeletonStats& s = thesisModel();
     Rng a(7), b(7);

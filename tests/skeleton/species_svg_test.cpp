@@ -277,6 +277,13 @@ TEST(SpeciesSvg, NeckFarFromTheShoulderIsAnError) {
                     "\"neck\" does not meet the back at the shoulder (141 px apart");
 }
 
+TEST(SpeciesSvg, OverflowingTransformIsAnError) {
+    EXPECT_CONTAINS(importError(backOnly("viewBox=\"0 0 1000 1000\"", "M 0 0 L 1 0",
+                                         "<g transform=\"scale(1e300)\"><path id=\"hand\" "
+                                         "d=\"M 0 0 L 1e300 1e300\"/></g>\n")),
+                    "coordinates overflow");
+}
+
 TEST(SpeciesSvg, MissingWeightIsAnError) {
     SvgImportOptions o = fields();
     o.weightKg.reset();

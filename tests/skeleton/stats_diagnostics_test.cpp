@@ -63,7 +63,7 @@ TEST(StatsDiagnostics, PlotsAreWellFormedAndDeterministic) {
         std::filesystem::path(RAMUS_BINARY_DIR) / "test_output" / "pca_plots";
     const SkeletonStats stats = SkeletonStats::builtin();
     const std::vector<std::string> files = writePcaPlots(stats, dir.string());
-    ASSERT_EQ(files.size(), 9u);
+    ASSERT_EQ(files.size(), 10u);
     for (const std::string& file : files) {
         const std::string text = readFile(file);
         const detail::XmlDocument doc = detail::parseXml(text, file);
