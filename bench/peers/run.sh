@@ -43,7 +43,9 @@ import {readFileSync} from 'node:fs';
 const [ramusFile, peerFile] = process.argv.slice(2);
 const unitSeconds = {ns: 1e-9, us: 1e-6, ms: 1e-3, s: 1};
 const ramus = new Map();
-for (const b of JSON.parse(readFileSync(ramusFile, 'utf8')).benchmarks) {
+// Google Benchmark writes NaN / inf for some aggregates of rate counters: not JSON.
+const ramusText = readFileSync(ramusFile, 'utf8').replace(/\b(-?inf|NaN)\b/g, 'null');
+for (const b of JSON.parse(ramusText).benchmarks) {
   if (b.aggregate_name !== 'median') continue;
   const [, system, n] = b.run_name.split('/');
   const seconds = b.cpu_time * unitSeconds[b.time_unit];
