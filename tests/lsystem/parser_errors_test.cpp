@@ -172,6 +172,26 @@ TEST(LSystemParseErrors, SecondLeftContextMarker) {
                 HasSubstr("bad.lsys:2:7: second '<' in the predecessor"));
 }
 
+TEST(LSystemParseErrors, SecondRightContextMarker) {
+    EXPECT_THAT(parseError("axiom: A\nA > B > C -> D"),
+                HasSubstr("bad.lsys:2:7: second '>' in the predecessor"));
+}
+
+TEST(LSystemParseErrors, RightContextMarkerBeforeLeft) {
+    EXPECT_THAT(parseError("axiom: A\nA > B < C -> D"),
+                HasSubstr("bad.lsys:2:3: '>' before '<'; expected 'left < predecessor > right'"));
+}
+
+TEST(LSystemParseErrors, EmptyRightContext) {
+    EXPECT_THAT(parseError("axiom: A\nA > -> D"),
+                HasSubstr("bad.lsys:2:3: empty right context; expected modules after '>'"));
+}
+
+TEST(LSystemParseErrors, MissingPredecessorBetweenContexts) {
+    EXPECT_THAT(parseError("axiom: A\nB <  > C -> D"),
+                HasSubstr("bad.lsys:2:6: missing predecessor; expected a module before '>'"));
+}
+
 TEST(LSystemParseErrors, IgnoredSymbolInContext) {
     EXPECT_THAT(parseError("ignore: + -\naxiom: A\n+ < A -> C"),
                 HasSubstr("bad.lsys:3:1: '+' is skipped when matching contexts"));
