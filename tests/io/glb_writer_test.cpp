@@ -74,7 +74,9 @@ TEST(GlbWriter, HeaderAndChunksAreAlignedAndSized) {
 }
 
 TEST(GlbWriter, JsonHasAssetSceneAndOneMeshNode) {
-    const Glb glb = splitGlb(encodeGlb(makeSingleMeshScene(makeCube(), "box")));
+    const Scene scene = makeSingleMeshScene(makeCube(), "box");
+    const Glb glb = splitGlb(encodeGlb(scene));
+    exportForValidator(scene, "box");
     EXPECT_EQ(glb.doc["asset"]["version"], "2.0");
     EXPECT_EQ(glb.doc["asset"]["generator"], "ramus 0.1.0");
     EXPECT_EQ(glb.doc["scene"], 0);
@@ -94,7 +96,9 @@ TEST(GlbWriter, JsonHasAssetSceneAndOneMeshNode) {
 }
 
 TEST(GlbWriter, AccessorCountsAndPositionBoundsMatchTheCube) {
-    const Glb glb = splitGlb(encodeGlb(makeSingleMeshScene(makeCube(0.5f, {1.0f, 2.0f, 3.0f}))));
+    const Scene scene = makeSingleMeshScene(makeCube(0.5f, {1.0f, 2.0f, 3.0f}));
+    const Glb glb = splitGlb(encodeGlb(scene));
+    exportForValidator(scene, "offset_cube");
     const json& prim = glb.doc["meshes"][0]["primitives"][0];
     const json& position = glb.doc["accessors"][prim["attributes"]["POSITION"].get<int>()];
     EXPECT_EQ(position["count"], 24);
@@ -114,6 +118,7 @@ TEST(GlbWriter, AccessorCountsAndPositionBoundsMatchTheCube) {
 TEST(GlbWriter, BufferHoldsThePositionsExactly) {
     const Mesh cube = makeCube(0.3f);
     const Glb glb = splitGlb(encodeGlb(makeSingleMeshScene(cube)));
+    exportForValidator(makeSingleMeshScene(cube), "small_cube");
     const json& prim = glb.doc["meshes"][0]["primitives"][0];
     const std::vector<float> positions = accessorFloats(glb, prim["attributes"]["POSITION"]);
     ASSERT_EQ(positions.size(), 72u);
@@ -261,6 +266,7 @@ TEST(GlbWriter, CustomGeneratorIsWrittenVerbatim) {
     Scene scene = makeSingleMeshScene(makeCube());
     scene.generator = "ramus lsystem 0.1.0";
     EXPECT_EQ(splitGlb(encodeGlb(scene)).doc["asset"]["generator"], "ramus lsystem 0.1.0");
+    exportForValidator(scene, "custom_generator");
 }
 
 TEST(GlbWriter, WriteGlbWritesTheEncodedBytes) {
@@ -269,6 +275,7 @@ TEST(GlbWriter, WriteGlbWritesTheEncodedBytes) {
     const std::string path = (dir / "tree.glb").string();
     writeGlb(scene, path);
     EXPECT_EQ(readFile(path), encodeGlb(scene));
+    exportForValidator(scene, "write_glb");
 }
 
 TEST(GlbWriter, InvalidExtrasJsonIsAnErrorNamingTheNode) {

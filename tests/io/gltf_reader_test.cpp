@@ -105,6 +105,7 @@ TEST(GltfReader, ChildrenListedBeforeParentsAreReordered) {
     doc["asset"] = {{"version", "2.0"}};
     const std::filesystem::path path = scratchDir("reader_order") / "order.gltf";
     writeFileAtomic(path.string(), doc.dump());
+    testing::exportGltfForValidator(path.string(), "order");
     const Scene scene = readGltf(path.string());
     ASSERT_EQ(scene.nodes.size(), 3u);
     EXPECT_EQ(scene.nodes[0].name, "body");
@@ -122,6 +123,7 @@ TEST(GltfReader, MatrixIsSplitIntoTranslationRotationScale) {
     doc["asset"] = {{"version", "2.0"}};
     const std::filesystem::path path = scratchDir("reader_matrix") / "matrix.gltf";
     writeFileAtomic(path.string(), doc.dump());
+    testing::exportGltfForValidator(path.string(), "matrix");
     const SceneNode node = readGltf(path.string()).nodes.at(0);
     EXPECT_TRUE(node.translation.isApprox(Vec3(1, 2, 3)));
     EXPECT_TRUE(node.scale.isApprox(Vec3(2, 3, 4)));
@@ -143,7 +145,9 @@ TEST(GltfReader, StripsFansAndUnindexedPrimitivesBecomeTriangles) {
                                  {"attributes": {"POSITION": 0}, "indices": 1, "mode": 6},
                                  {"attributes": {"POSITION": 0}, "mode": 4},
                                  {"attributes": {"POSITION": 0}, "mode": 1}]}]})");
-    const Scene scene = readGltf(writeGltf("modes", doc, bin));
+    const std::string path = writeGltf("modes", doc, bin);
+    testing::exportGltfForValidator(path, "modes");
+    const Scene scene = readGltf(path);
     const Mesh& m = scene.meshes.at(0);
     EXPECT_EQ(m.positions.size(), 4u);   // one shared vertex set
     ASSERT_EQ(m.primitives.size(), 3u);  // the line primitive is left out
@@ -176,7 +180,9 @@ TEST(GltfReader, InterleavedNormalizedAndSparseAccessorsAreDecoded) {
                     {"bufferView": 0, "byteOffset": 12, "componentType": 5123,
                      "normalized": true, "count": 3, "type": "VEC2"}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}}]}]})");
-    const Mesh m = readGltf(writeGltf("interleaved", doc, bin)).meshes.at(0);
+    const std::string path = writeGltf("interleaved", doc, bin);
+    testing::exportGltfForValidator(path, "interleaved");
+    const Mesh m = readGltf(path).meshes.at(0);
     ASSERT_EQ(m.positions.size(), 3u);
     EXPECT_EQ(m.positions[0], Vec3f(0, 0, 0));
     EXPECT_EQ(m.positions[1], Vec3f(5, 6, 7));

@@ -90,4 +90,21 @@ inline void exportForValidator(const Scene& scene, const std::string& name) {
     writeGlb(scene, (std::filesystem::path(dir) / ("io_" + name + ".glb")).string());
 }
 
+/// Copies the hand-written glTF test file `gltfPath` and the .bin files next to it into
+/// $RAMUS_TEST_OUTPUT/io_reader_<name>/ for the glTF validator (no-op when unset).
+inline void exportGltfForValidator(const std::string& gltfPath, const std::string& name) {
+    const char* dir = std::getenv("RAMUS_TEST_OUTPUT");
+    if (dir == nullptr || *dir == '\0') return;
+    const std::filesystem::path target = std::filesystem::path(dir) / ("io_reader_" + name);
+    std::filesystem::create_directories(target);
+    const std::filesystem::path source(gltfPath);
+    for (const auto& entry : std::filesystem::directory_iterator(source.parent_path())) {
+        const std::string ext = entry.path().extension().string();
+        if (ext == ".bin" || entry.path() == source) {
+            std::filesystem::copy_file(entry.path(), target / entry.path().filename(),
+                                       std::filesystem::copy_options::overwrite_existing);
+        }
+    }
+}
+
 }  // namespace ramus::testing

@@ -232,6 +232,7 @@ TEST(Render, AGlbReadBackRendersLikeTheSceneItWasWrittenFrom) {
     const Scene scene = testing::makeHierarchyScene();
     const std::string path = (testing::scratchDir("render_glb") / "tree.glb").string();
     writeGlb(scene, path);
+    testing::exportForValidator(scene, "render_source");
     const Image direct = render(scene, View::ThreeQuarter);
     const Image viaFile = render(readGltf(path), View::ThreeQuarter);
     EXPECT_EQ(viaFile.rgba, direct.rgba);

@@ -31,6 +31,7 @@ TEST(WriteScene, ExtensionIsCaseInsensitive) {
     writeScene(scene, (dir / "a.GLB").string());
     writeScene(scene, (dir / "b.Obj").string());
     EXPECT_EQ(readFile((dir / "a.GLB").string()), encodeGlb(scene));
+    testing::exportForValidator(scene, "write_scene_upper_case");
     EXPECT_TRUE(std::filesystem::exists(dir / "b.Obj"));
     EXPECT_TRUE(std::filesystem::exists(dir / "b.mtl"));
 }
