@@ -4,6 +4,7 @@
 // range); nodes are added over time into per-cell linked lists.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -35,7 +36,7 @@ public:
     /// every point within `radius` of `center` (and some farther ones).
     template <typename Visit>
     void forEachPointRange(const Vec3& center, double radius, Visit&& visit) const {
-        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1) {
+        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1, double) {
             visit(cellStart_[rowCell + static_cast<std::size_t>(x0)],
                   cellStart_[rowCell + static_cast<std::size_t>(x1) + 1]);
         });
@@ -44,9 +45,34 @@ public:
     /// Calls visit(cell) for every cell that may hold a position within `radius` of `center`.
     template <typename Visit>
     void forEachCell(const Vec3& center, double radius, Visit&& visit) const {
-        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1) {
+        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1, double) {
             for (int x = x0; x <= x1; ++x) visit(rowCell + static_cast<std::size_t>(x));
         });
+    }
+
+    /// As forEachCell, and also passes a lower bound of the squared distance from `center` to
+    /// the cell's box (slightly shrunk, so rounding never makes it too large).
+    template <typename Visit>
+    void forEachCellWithGap(const Vec3& center, double radius, Visit&& visit) const {
+        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1, double rowGap2) {
+            for (int x = x0; x <= x1; ++x) {
+                const double dx = axisGap(center.x(), x, 0);
+                visit(rowCell + static_cast<std::size_t>(x), rowGap2 + dx * dx);
+            }
+        });
+    }
+
+    /// The cell-ordered points of `cell` are [cellBegin(cell), cellEnd(cell)).
+    std::uint32_t cellBegin(std::size_t cell) const { return cellStart_[cell]; }
+    std::uint32_t cellEnd(std::size_t cell) const { return cellStart_[cell + 1]; }
+
+    /// Largest absolute coordinate of any point of the grid's box.
+    double maxAbsCoordinate() const {
+        double m = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            m = std::max({m, std::abs(origin_[a]), std::abs(origin_[a] + cellSize_ * count_[a])});
+        }
+        return m;
     }
 
     /// True when the ball of `radius` around `center` lies inside the grid.
@@ -56,8 +82,9 @@ public:
     std::size_t memoryBytes() const { return cellStart_.capacity() * sizeof(std::uint32_t); }
 
 private:
-    // Calls visit(cellIndexOfRowStart, x0, x1) for each row (y, z) of cells touched by the
-    // ball, with the x range narrowed to the ball's chord in that row.
+    // Calls visit(cellIndexOfRowStart, x0, x1, rowGap2) for each row (y, z) of cells touched by
+    // the ball, with the x range narrowed to the ball's chord in that row; rowGap2 bounds the
+    // squared distance in y and z from below.
     template <typename Visit>
     void forEachRow(const Vec3& c, double r, Visit&& visit) const {
         int lo[3], hi[3];
@@ -81,7 +108,7 @@ private:
                 const std::size_t row =
                     (static_cast<std::size_t>(z) * count_[1] + static_cast<std::size_t>(y)) *
                     count_[0];
-                visit(row, x0, x1);
+                visit(row, x0, x1, dz2 + dy * dy);
             }
         }
     }
@@ -91,11 +118,13 @@ private:
         return cell >= count_[axis] - 1 ? count_[axis] - 1 : static_cast<int>(cell);
     }
 
-    // Distance along `axis` from coordinate v to the slab of cell i (0 inside).
+    // Distance along `axis` from coordinate v to the slab of cell i (0 inside), less a
+    // millionth of a cell so that points rounded into the cell are never closer than this.
     double axisGap(double v, int i, int axis) const {
-        const double lo = origin_[axis] + cellSize_ * i;
+        const double slack = 1e-6 * cellSize_;
+        const double lo = origin_[axis] + cellSize_ * i - slack;
         if (v < lo) return lo - v;
-        const double hi = lo + cellSize_;
+        const double hi = lo + cellSize_ + 2.0 * slack;
         return v > hi ? v - hi : 0.0;
     }
 

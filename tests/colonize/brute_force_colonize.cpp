@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "colonize/growth_rules.hpp"
+#include "../../src/colonize/growth_rules.hpp"
 
 namespace ramus::testing {
 

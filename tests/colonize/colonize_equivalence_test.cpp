@@ -78,8 +78,8 @@ TEST_P(ColonizeEquivalence, FastAndBruteForceGrowTheSameNodesInTheSameOrder) {
 
 INSTANTIATE_TEST_SUITE_P(Extensions, ColonizeEquivalence,
                          ::testing::Range(0, static_cast<int>(std::size(kCases))),
-                         [](const ::testing::TestParamInfo<int>& info) {
-                             return std::string(kCases[info.param].name);
+                         [](const ::testing::TestParamInfo<int>& param) {
+                             return std::string(kCases[param.param].name);
                          });
 
 TEST(ColonizeEquivalence, PlanarDiscGivesTheSameTreeAsBruteForce) {

@@ -1,0 +1,177 @@
+// Based on: Runions et al. 2007 §2, seed 002 §3.3 (steps 1 and 3), made incremental. Every
+// decision is taken in double precision exactly as the brute-force definition takes it; single
+// precision only pre-selects candidates, with a margin larger than its rounding error.
+#include "attractor_store.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "growth_rules.hpp"
+
+namespace ramus::colonize_detail {
+
+namespace {
+
+constexpr float kDeadKey = -std::numeric_limits<float>::infinity();
+// Rounds a float key up so it is never below the double it stands for.
+constexpr float kKeyUp = 1.0f + 0x1p-22f;
+// Relative slack on keys and bounds, larger than the float rounding of a comparison.
+constexpr float kSlack = 1.0f + 0x1p-20f;
+
+}  // namespace
+
+AttractorStore::AttractorStore(std::span<const Vec3f> points, double influenceRadius,
+                               double killRadius, int gridSubdivision)
+    : influence2_(influenceRadius * influenceRadius), kill2_(killRadius * killRadius) {
+    grid_ = SpatialGrid(points, influenceRadius, gridSubdivision,
+                        std::max<std::size_t>(points.size() / 2, 4096), original_);
+    const std::size_t n = points.size();
+    x_.resize(n), y_.resize(n), z_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3f& p = points[original_[i]];
+        x_[i] = p.x(), y_[i] = p.y(), z_[i] = p.z();
+    }
+    unassignedKey_ = static_cast<float>(influence2_) * kKeyUp;
+    key_.assign(n, unassignedKey_);
+    owner_.assign(n, kUnassigned);
+    next_.assign(n, -1);
+    prev_.assign(n, -1);
+    alive_ = n;
+    // Float squared distances (for distances up to d_i, coordinates up to m) are off by less
+    // than this; see the error analysis in docs/colonize.md ("Speed").
+    const double m = grid_.maxAbsCoordinate() + influenceRadius;
+    const double e1 = 0x1p-22 * (m + influenceRadius);
+    floatMargin_ =
+        static_cast<float>(0x1p-20 * influence2_ + 4.0 * e1 * influenceRadius + 4.0 * e1 * e1);
+    cellBound_.assign(grid_.cellCount(), kDeadKey);
+    std::uint32_t largestCell = 0;
+    for (std::size_t c = 0; c < grid_.cellCount(); ++c) {
+        const std::uint32_t count = grid_.cellEnd(c) - grid_.cellBegin(c);
+        if (count > 0) cellBound_[c] = unassignedKey_ * kSlack;
+        largestCell = std::max(largestCell, count);
+    }
+    candidates_.resize(largestCell);
+}
+
+void AttractorStore::attach(std::uint32_t i, NodeId node, double d2) {
+    owner_[i] = node;
+    key_[i] = static_cast<float>(d2) * kKeyUp;
+    prev_[i] = -1;
+    next_[i] = head_[static_cast<std::size_t>(node)];
+    if (next_[i] != -1) prev_[static_cast<std::size_t>(next_[i])] = static_cast<std::int32_t>(i);
+    head_[static_cast<std::size_t>(node)] = static_cast<std::int32_t>(i);
+    ++assigned_;
+}
+
+void AttractorStore::detach(std::uint32_t i) {
+    const NodeId node = owner_[i];
+    if (prev_[i] != -1) {
+        next_[static_cast<std::size_t>(prev_[i])] = next_[i];
+    } else {
+        head_[static_cast<std::size_t>(node)] = next_[i];
+    }
+    if (next_[i] != -1) prev_[static_cast<std::size_t>(next_[i])] = prev_[i];
+    owner_[i] = kUnassigned;
+    key_[i] = unassignedKey_;
+    --assigned_;
+}
+
+void AttractorStore::moveTo(std::uint32_t i, NodeId node, double d2) {
+    if (owner_[i] >= 0) detach(i);
+    if (node >= 0) attach(i, node, d2);
+    // The key may have grown (owner farther or gone): raise the cell's bound.
+    const auto cell = static_cast<std::size_t>(grid_.cellOf(position(i).cast<double>()));
+    cellBound_[cell] = std::max(cellBound_[cell], key_[i] * kSlack);
+}
+
+void AttractorStore::refreshBound(std::size_t cell) {
+    float bound = kDeadKey;
+    for (std::uint32_t i = grid_.cellBegin(cell); i < grid_.cellEnd(cell); ++i) {
+        bound = std::max(bound, key_[i]);
+    }
+    cellBound_[cell] = bound * kSlack;
+}
+
+void AttractorStore::removeAndClaimNear(NodeId node, const Vec3& c,
+                                        std::span<const Vec3> nodePositions,
+                                        std::vector<NodeId>& changedNodes) {
+    const float cx = static_cast<float>(c.x()), cy = static_cast<float>(c.y()),
+                cz = static_cast<float>(c.z());
+    const float killThreshold = static_cast<float>(kill2_) * kSlack;
+    bool claimed = false;
+    grid_.forEachCellWithGap(c, std::sqrt(influence2_), [&](std::size_t cell, double gap2) {
+        const float bound = cellBound_[cell];
+        if (bound < 0.0f || (gap2 >= kill2_ && (gap2 >= influence2_ || gap2 >= bound))) return;
+        // Pass 1, branch-free: points whose float distance may be below their key (claim) or
+        // the kill radius (removal); dead points have key -inf and never pass.
+        const std::uint32_t first = grid_.cellBegin(cell), last = grid_.cellEnd(cell);
+        std::uint32_t count = 0;
+        for (std::uint32_t i = first; i < last; ++i) {
+            const float dx = x_[i] - cx, dy = y_[i] - cy, dz = z_[i] - cz;
+            const float key = key_[i];
+            const float limit = key < 0.0f ? key : std::max(key * kSlack, killThreshold);
+            candidates_[count] = i;
+            count += (dx * dx + dy * dy + dz * dz < limit + floatMargin_) ? 1u : 0u;
+        }
+        if (count == 0) return;
+        // Pass 2, exact: remove within d_k; else claim when strictly nearer than the owner
+        // (a tie keeps the older node).
+        bool changed = false;
+        for (std::uint32_t k = 0; k < count; ++k) {
+            const std::uint32_t i = candidates_[k];
+            const double d2 = squaredDistance(position(i), c);
+            const NodeId current = owner_[i];
+            if (d2 < kill2_) {
+                if (current >= 0) {
+                    changedNodes.push_back(current);
+                    detach(i);
+                }
+                owner_[i] = kDead;
+                key_[i] = kDeadKey;
+                --alive_;
+                changed = true;
+                continue;
+            }
+            if (!(d2 < influence2_)) continue;
+            if (current >= 0) {
+                const Vec3& owner = nodePositions[static_cast<std::size_t>(current)];
+                if (d2 >= squaredDistance(position(i), owner)) continue;
+                changedNodes.push_back(current);
+                detach(i);
+            }
+            attach(i, node, d2);
+            changed = claimed = true;
+        }
+        if (changed) refreshBound(cell);
+    });
+    if (claimed) changedNodes.push_back(node);
+}
+
+bool AttractorStore::hasPointWithin(const Vec3& c, double radius) const {
+    bool found = false;
+    grid_.forEachCellWithGap(c, radius, [&](std::size_t cell, double gap2) {
+        if (found || cellBound_[cell] < 0.0f || gap2 >= radius * radius) return;
+        for (std::uint32_t i = grid_.cellBegin(cell); i < grid_.cellEnd(cell) && !found; ++i) {
+            found = owner_[i] != kDead && squaredDistance(position(i), c) < radius * radius;
+        }
+    });
+    return found;
+}
+
+std::int64_t AttractorStore::nearestAlive(const Vec3& c) const {
+    std::int64_t best = -1;
+    double bestD2 = 0.0;
+    for (std::uint32_t i = 0; i < owner_.size(); ++i) {
+        if (owner_[i] == kDead) continue;
+        const double d2 = squaredDistance(position(i), c);
+        if (best < 0 || d2 < bestD2 ||
+            (d2 == bestD2 && original_[i] < original_[static_cast<std::size_t>(best)])) {
+            best = i;
+            bestD2 = d2;
+        }
+    }
+    return best;
+}
+
+}  // namespace ramus::colonize_detail
