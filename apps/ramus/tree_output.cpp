@@ -53,18 +53,6 @@ void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params) {
         ->expected(0);
 }
 
-void parseImageSize(const std::string& text, int& width, int& height) {
-    int w = 0, h = 0;
-    char tail = 0;
-    if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 8192 ||
-        h > 8192) {
-        throw Error("--size: invalid image size '" + text +
-                    "'; expected WxH with 16 <= W, H <= 8192, e.g. 800x600");
-    }
-    width = w;
-    height = h;
-}
-
 void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const Mesh& mesh,
                       const TubeMeshParams& meshParams) {
     if (mesh.positions.empty() && (!outputs.model.empty() || !outputs.png.empty())) {
@@ -74,7 +62,9 @@ void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const 
     RenderParams render;
     if (!outputs.png.empty()) {
         render.view = parseView(outputs.view);
-        parseImageSize(outputs.size, render.width, render.height);
+        const ImageSize size = ramus::parseImageSize(outputs.size);
+        render.width = size.width;
+        render.height = size.height;
     }
     const Scene scene = makeSingleMeshScene(mesh, "tree");
     if (!outputs.model.empty()) writeScene(scene, outputs.model);

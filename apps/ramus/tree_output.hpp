@@ -28,9 +28,6 @@ void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs);
 /// Registers the mesher's flags (--leaf-radius, --radius-exponent, …) on `command`.
 void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params);
 
-/// Parses "WxH" (16…8192 each); throws Error on anything else.
-void parseImageSize(const std::string& text, int& width, int& height);
-
 /// Writes every requested output for `tree` and its already built `mesh`.
 void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const Mesh& mesh,
                       const TubeMeshParams& meshParams);

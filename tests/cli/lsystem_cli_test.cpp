@@ -144,7 +144,7 @@ TEST(LsystemCli, BadPreviewSizeIsRejectedBeforeWritingAnything) {
                      (dir / "t.png").string() + " --size 10x",
                  dir);
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_NE(r.err.find("WxH"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("WIDTHxHEIGHT"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "t.glb"));
 }
 
