@@ -10,5 +10,6 @@ void addLsystemCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addSpeciesCommand(CLI::App& app);
 void addPcaCommand(CLI::App& app);
+void addColonizeCommand(CLI::App& app);
 
 }  // namespace ramus::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     ramus::cli::addRenderCommand(app);
     ramus::cli::addSpeciesCommand(app);
     ramus::cli::addPcaCommand(app);
+    ramus::cli::addColonizeCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
