@@ -1,0 +1,157 @@
+// `ramus colonize CONFIG.json …`: sample the envelopes, grow by space colonization, mesh,
+// write (docs/colonize.md).
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "ramus/colonize.hpp"
+#include "ramus/error.hpp"
+#include "ramus/file_util.hpp"
+#include "ramus/tree_json.hpp"
+#include "ramus/tube_mesher.hpp"
+#include "tree_output.hpp"
+
+namespace ramus::cli {
+
+namespace {
+
+struct ColonizeOptions {
+    std::string config;
+    std::vector<std::string> seed;  // 0 or 1 value; a vector tells "absent" from "0"
+    std::string points;
+    bool stats = false;
+    TreeOutputs outputs;
+    TubeMeshParams mesh;  // flags; applied over the config's "mesh" object when given
+    CLI::App* command = nullptr;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::uint64_t parseSeed(const std::string& text) {
+    std::size_t used = 0;
+    unsigned long long value = 0;
+    try {
+        value = std::stoull(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || text[0] == '-') {
+        throw Error("--seed: invalid seed '" + text + "'; expected a non-negative integer");
+    }
+    return value;
+}
+
+// Mesher settings: defaults, then the config's "mesh" object, then the flags given.
+TubeMeshParams meshParams(const ColonizeOptions& o, const ColonizeConfig::MeshOverrides& m) {
+    TubeMeshParams p;
+    if (m.hasLeafRadius) p.leafRadius = m.leafRadius;
+    if (m.hasRadiusExponent) p.radiusExponent = m.radiusExponent;
+    if (m.hasTrunkMultiplier) p.trunkMultiplier = m.trunkMultiplier;
+    if (m.hasMinSegments) p.minSegments = m.minSegments;
+    if (m.hasMaxSegments) p.maxSegments = m.maxSegments;
+    if (m.hasCapTips) p.capTips = m.capTips;
+    const CLI::App& c = *o.command;
+    if (c.count("--leaf-radius")) p.leafRadius = o.mesh.leafRadius;
+    if (c.count("--radius-exponent")) p.radiusExponent = o.mesh.radiusExponent;
+    if (c.count("--trunk-multiplier")) p.trunkMultiplier = o.mesh.trunkMultiplier;
+    if (c.count("--min-segments")) p.minSegments = o.mesh.minSegments;
+    if (c.count("--max-segments")) p.maxSegments = o.mesh.maxSegments;
+    if (c.count("--curve-reduction")) p.curveReduction = o.mesh.curveReduction;
+    if (c.count("--no-caps")) p.capTips = false;
+    if (p.maxSegments < p.minSegments) {
+        throw Error("max_segments " + std::to_string(p.maxSegments) + " is below min_segments " +
+                    std::to_string(p.minSegments) + "; expected max_segments >= min_segments");
+    }
+    return p;
+}
+
+// One tree: the usual tree JSON; several: {"trees":[…]} with one such object per root.
+std::string encodeForest(const std::vector<BranchTree>& trees, const TubeMeshParams& mesh) {
+    if (trees.size() == 1) return encodeTreeJson(trees[0], computeEdgeRadii(trees[0], mesh));
+    std::string text = "{\"trees\":[";
+    for (std::size_t t = 0; t < trees.size(); ++t) {
+        if (t > 0) text += ",";
+        std::string one = encodeTreeJson(trees[t], computeEdgeRadii(trees[t], mesh));
+        while (!one.empty() && (one.back() == '\n' || one.back() == ' ')) one.pop_back();
+        text += one;
+    }
+    return text + "]}\n";
+}
+
+void run(ColonizeOptions& o) {
+    ColonizeConfig config = loadColonizeConfig(o.config);
+    if (!o.seed.empty()) config.seed = parseSeed(o.seed.front());
+    const TubeMeshParams mesh = meshParams(o, config.mesh);
+    if (!o.stats && !o.outputs.any()) {
+        o.outputs.model = std::filesystem::path(o.config).stem().string() + ".glb";
+        std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());
+    }
+
+    auto start = std::chrono::steady_clock::now();
+    std::vector<Vec3> points = configAttractionPoints(config);
+    if (!o.points.empty()) {
+        const std::vector<Vec3> extra =
+            removePointsInside(readPointsFile(o.points), config.obstacles);
+        points.insert(points.end(), extra.begin(), extra.end());
+    }
+    const double sampleSeconds = secondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    const ColonizeResult result = growFromConfig(config, points);
+    const double growSeconds = secondsSince(start);
+    for (const std::string& w : result.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+
+    start = std::chrono::steady_clock::now();
+    Mesh model;
+    for (const BranchTree& tree : result.trees) appendMesh(model, buildTubeMesh(tree, mesh));
+    const double meshSeconds = secondsSince(start);
+
+    TreeOutputs outputs = o.outputs;
+    outputs.treeJson.clear();  // written below, for all trees
+    writeTreeOutputs(outputs, result.trees.front(), model, mesh);
+    if (!o.outputs.treeJson.empty()) {
+        writeFileAtomic(o.outputs.treeJson, encodeForest(result.trees, mesh));
+    }
+    if (o.stats) {
+        nlohmann::ordered_json stats;
+        stats["trees"] = result.trees.size();
+        stats["attractors"] = result.attractors;
+        stats["attractors_left"] = result.attractorsLeft;
+        stats["iterations"] = result.iterations;
+        stats["nodes"] = result.nodeCount();
+        stats["vertices"] = model.vertexCount();
+        stats["triangles"] = model.triangleCount();
+        stats["sample_seconds"] = sampleSeconds;
+        stats["grow_seconds"] = growSeconds;
+        stats["mesh_seconds"] = meshSeconds;
+        std::printf("%s\n", stats.dump().c_str());
+    }
+}
+
+}  // namespace
+
+void addColonizeCommand(CLI::App& app) {
+    auto options = std::make_shared<ColonizeOptions>();
+    CLI::App* cmd =
+        app.add_subcommand("colonize", "grow trees by space colonization from a config (.json)");
+    options->command = cmd;
+    cmd->add_option("CONFIG", options->config, "the colonization config (docs/colonize.md)")
+        ->required();
+    cmd->add_option("--seed", options->seed, "base seed mixed into every envelope's seed")
+        ->expected(1);
+    cmd->add_option("--points", options->points,
+                    "extra attraction points from a .xyz, .txt, .csv or ASCII .ply file");
+    cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
+    addTreeOutputOptions(*cmd, options->outputs);
+    addTubeMeshOptions(*cmd, options->mesh);
+    cmd->callback([options] { run(*options); });
+}
+
+}  // namespace ramus::cli
