@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "growth_rules.hpp"
@@ -93,6 +94,54 @@ void AttractorStore::refreshBound(std::size_t cell) {
     cellBound_[cell] = bound * kSlack;
 }
 
+// Pass 1 of removeAndClaimNear, branch-free: stores in candidates_ the points of [first, last)
+// whose float squared distance to (cx, cy, cz) may be below max(key·slack, kill threshold);
+// dead points (key -inf) never qualify. Four points at a time where vector extensions exist.
+std::uint32_t AttractorStore::preselect(std::uint32_t first, std::uint32_t last, float cx, float cy,
+                                        float cz, float killThreshold) {
+    const float* xs = x_.data();
+    const float* ys = y_.data();
+    const float* zs = z_.data();
+    const float* keys = key_.data();
+    std::uint32_t* out = candidates_.data();
+    const float margin = floatMargin_;
+    std::uint32_t count = 0;
+    std::uint32_t i = first;
+#if defined(__GNUC__)
+    using V4f = float __attribute__((vector_size(16)));
+    const V4f vx = {cx, cx, cx, cx}, vy = {cy, cy, cy, cy}, vz = {cz, cz, cz, cz};
+    const V4f slack = {kSlack, kSlack, kSlack, kSlack};
+    const V4f kill = {killThreshold, killThreshold, killThreshold, killThreshold};
+    const V4f vmargin = {margin, margin, margin, margin};
+    const V4f zero = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (; i + 4 <= last; i += 4) {
+        V4f x, y, z, key;
+        std::memcpy(&x, xs + i, sizeof x);
+        std::memcpy(&y, ys + i, sizeof y);
+        std::memcpy(&z, zs + i, sizeof z);
+        std::memcpy(&key, keys + i, sizeof key);
+        const V4f dx = x - vx, dy = y - vy, dz = z - vz;
+        const V4f scaled = key * slack;
+        V4f limit = scaled > kill ? scaled : kill;
+        limit = key < zero ? key : limit;
+        const auto pass = (dx * dx + dy * dy + dz * dz) < (limit + vmargin);
+        if (!(pass[0] | pass[1] | pass[2] | pass[3])) continue;
+        for (std::uint32_t lane = 0; lane < 4; ++lane) {
+            out[count] = i + lane;
+            count += pass[lane] ? 1u : 0u;
+        }
+    }
+#endif
+    for (; i < last; ++i) {
+        const float dx = xs[i] - cx, dy = ys[i] - cy, dz = zs[i] - cz;
+        const float key = keys[i];
+        const float limit = key < 0.0f ? key : std::max(key * kSlack, killThreshold);
+        out[count] = i;
+        count += (dx * dx + dy * dy + dz * dz < limit + margin) ? 1u : 0u;
+    }
+    return count;
+}
+
 void AttractorStore::removeAndClaimNear(NodeId node, const Vec3& c,
                                         std::span<const Vec3> nodePositions,
                                         std::vector<NodeId>& changedNodes) {
@@ -105,15 +154,8 @@ void AttractorStore::removeAndClaimNear(NodeId node, const Vec3& c,
         if (bound < 0.0f || (gap2 >= kill2_ && (gap2 >= influence2_ || gap2 >= bound))) return;
         // Pass 1, branch-free: points whose float distance may be below their key (claim) or
         // the kill radius (removal); dead points have key -inf and never pass.
-        const std::uint32_t first = grid_.cellBegin(cell), last = grid_.cellEnd(cell);
-        std::uint32_t count = 0;
-        for (std::uint32_t i = first; i < last; ++i) {
-            const float dx = x_[i] - cx, dy = y_[i] - cy, dz = z_[i] - cz;
-            const float key = key_[i];
-            const float limit = key < 0.0f ? key : std::max(key * kSlack, killThreshold);
-            candidates_[count] = i;
-            count += (dx * dx + dy * dy + dz * dz < limit + floatMargin_) ? 1u : 0u;
-        }
+        const std::uint32_t count =
+            preselect(grid_.cellBegin(cell), grid_.cellEnd(cell), cx, cy, cz, killThreshold);
         if (count == 0) return;
         // Pass 2, exact: remove within d_k; else claim when strictly nearer than the owner
         // (a tie keeps the older node).

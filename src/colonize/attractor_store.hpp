@@ -62,6 +62,8 @@ private:
     void detach(std::uint32_t i);
     void attach(std::uint32_t i, NodeId node, double d2);
     void refreshBound(std::size_t cell);
+    std::uint32_t preselect(std::uint32_t first, std::uint32_t last, float cx, float cy, float cz,
+                            float killThreshold);
 
     SpatialGrid grid_;
     double influence2_ = 0.0, kill2_ = 0.0;

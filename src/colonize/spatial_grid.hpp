@@ -51,15 +51,53 @@ public:
     }
 
     /// As forEachCell, and also passes a lower bound of the squared distance from `center` to
-    /// the cell's box (slightly shrunk, so rounding never makes it too large).
+    /// the cell's box (slightly shrunk, so rounding never makes it too large). Cells whose
+    /// bound is not below radius² are left out.
     template <typename Visit>
     void forEachCellWithGap(const Vec3& center, double radius, Visit&& visit) const {
-        forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1, double rowGap2) {
-            for (int x = x0; x <= x1; ++x) {
-                const double dx = axisGap(center.x(), x, 0);
-                visit(rowCell + static_cast<std::size_t>(x), rowGap2 + dx * dx);
+        constexpr int kMaxSpan = 24;
+        int lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            if (center[a] + radius < origin_[a] ||
+                center[a] - radius > origin_[a] + cellSize_ * count_[a]) {
+                return;
             }
-        });
+            lo[a] = clampIndex(std::floor((center[a] - radius - origin_[a]) * inverseCell_), a);
+            hi[a] = clampIndex(std::floor((center[a] + radius - origin_[a]) * inverseCell_), a);
+        }
+        if (hi[0] - lo[0] >= kMaxSpan || hi[1] - lo[1] >= kMaxSpan || hi[2] - lo[2] >= kMaxSpan) {
+            forEachRow(center, radius, [&](std::size_t rowCell, int x0, int x1, double rowGap2) {
+                for (int x = x0; x <= x1; ++x) {
+                    const double dx = axisGap(center.x(), x, 0);
+                    visit(rowCell + static_cast<std::size_t>(x), rowGap2 + dx * dx);
+                }
+            });
+            return;
+        }
+        // Squared gaps per axis, once per query.
+        double gap2[3][kMaxSpan];
+        for (int a = 0; a < 3; ++a) {
+            for (int i = lo[a]; i <= hi[a]; ++i) {
+                const double d = axisGap(center[a], i, a);
+                gap2[a][i - lo[a]] = d * d;
+            }
+        }
+        const double r2 = radius * radius;
+        for (int z = lo[2]; z <= hi[2]; ++z) {
+            const double gz = gap2[2][z - lo[2]];
+            if (gz >= r2) continue;
+            for (int y = lo[1]; y <= hi[1]; ++y) {
+                const double gyz = gz + gap2[1][y - lo[1]];
+                if (gyz >= r2) continue;
+                const std::size_t row =
+                    (static_cast<std::size_t>(z) * count_[1] + static_cast<std::size_t>(y)) *
+                    count_[0];
+                for (int x = lo[0]; x <= hi[0]; ++x) {
+                    const double g = gyz + gap2[0][x - lo[0]];
+                    if (g < r2) visit(row + static_cast<std::size_t>(x), g);
+                }
+            }
+        }
     }
 
     /// The cell-ordered points of `cell` are [cellBegin(cell), cellEnd(cell)).
