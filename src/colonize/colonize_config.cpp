@@ -295,6 +295,32 @@ void parseGrowth(const ConfigReader& r, const Json& j, ColonizeParams& p) {
     p.roots = parseRoots(r, j);
 }
 
+// "envelopes" (shapes with a point count and a seed) and "obstacles" (plain shapes).
+void parseShapeLists(const ConfigReader& r, const Json& j, ColonizeConfig& c) {
+    for (const char* key : {"envelopes", "obstacles"}) {
+        if (!j.contains(key)) continue;
+        const Json& list = j[key];
+        if (!list.is_array()) r.fail(key, "expected an array of shapes, got " + list.dump());
+        const bool envelope = std::string(key) == "envelopes";
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string path = std::string(key) + "[" + std::to_string(i) + "]";
+            const Shape shape = parseShape(r, list[i], path, envelope);
+            if (!envelope) {
+                c.obstacles.push_back(shape);
+                continue;
+            }
+            Envelope e;
+            e.shape = shape;
+            e.seed = i;
+            if (!list[i].contains("points")) r.fail(path, "missing key \"points\" (point count N)");
+            e.pointCount = static_cast<std::uint32_t>(r.integer(
+                list[i]["points"], path + ".points", 0, 50'000'000, "attraction points N"));
+            if (list[i].contains("seed")) e.seed = r.seed(list[i]["seed"], path + ".seed");
+            c.envelopes.push_back(e);
+        }
+    }
+}
+
 }  // namespace
 
 ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::string& fileName) {
@@ -325,28 +351,7 @@ ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::strin
         c.curveReduction = r.number(j["curve_reduction"], "curve_reduction", 0.0, 0.999999, false,
                                     "max_K, dot product of unit edge directions; 0 = off");
     }
-    for (const char* key : {"envelopes", "obstacles"}) {
-        if (!j.contains(key)) continue;
-        const Json& list = j[key];
-        if (!list.is_array()) r.fail(key, "expected an array of shapes, got " + list.dump());
-        const bool envelope = std::string(key) == "envelopes";
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const std::string path = std::string(key) + "[" + std::to_string(i) + "]";
-            const Shape shape = parseShape(r, list[i], path, envelope);
-            if (!envelope) {
-                c.obstacles.push_back(shape);
-                continue;
-            }
-            Envelope e;
-            e.shape = shape;
-            e.seed = i;
-            if (!list[i].contains("points")) r.fail(path, "missing key \"points\" (point count N)");
-            e.pointCount = static_cast<std::uint32_t>(r.integer(
-                list[i]["points"], path + ".points", 0, 50'000'000, "attraction points N"));
-            if (list[i].contains("seed")) e.seed = r.seed(list[i]["seed"], path + ".seed");
-            c.envelopes.push_back(e);
-        }
-    }
+    parseShapeLists(r, j, c);
     if (j.contains("points_file")) {
         if (!j["points_file"].is_string() || j["points_file"].get<std::string>().empty()) {
             r.fail("points_file", "expected a file name, got " + j["points_file"].dump());
