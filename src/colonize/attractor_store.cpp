@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "growth_rules.hpp"
 
@@ -22,17 +23,23 @@ constexpr float kSlack = 1.0f + 0x1p-20f;
 
 }  // namespace
 
-AttractorStore::AttractorStore(std::span<const Vec3f> points, double influenceRadius,
-                               double killRadius, int gridSubdivision)
-    : influence2_(influenceRadius * influenceRadius), kill2_(killRadius * killRadius) {
-    grid_ = SpatialGrid(points, influenceRadius, gridSubdivision,
-                        std::max<std::size_t>(points.size() / 2, 4096), original_);
-    const std::size_t n = points.size();
-    x_.resize(n), y_.resize(n), z_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Vec3f& p = points[original_[i]];
-        x_[i] = p.x(), y_[i] = p.y(), z_[i] = p.z();
+AttractorStore::AttractorStore(std::vector<float> xs, std::vector<float> ys, std::vector<float> zs,
+                               double influenceRadius, double killRadius, int gridSubdivision)
+    : influence2_(influenceRadius * influenceRadius),
+      kill2_(killRadius * killRadius),
+      x_(std::move(xs)),
+      y_(std::move(ys)),
+      z_(std::move(zs)) {
+    const std::size_t n = x_.size();
+    grid_ = SpatialGrid(x_, y_, z_, influenceRadius, gridSubdivision,
+                        std::max<std::size_t>(n / 2, 4096), original_);
+    // Into cell order, one coordinate at a time (4 extra bytes per point at most).
+    std::vector<float> sorted(n);
+    for (std::vector<float>* axis : {&x_, &y_, &z_}) {
+        for (std::size_t i = 0; i < n; ++i) sorted[i] = (*axis)[original_[i]];
+        axis->swap(sorted);
     }
+    sorted = {};
     unassignedKey_ = static_cast<float>(influence2_) * kKeyUp;
     key_.assign(n, unassignedKey_);
     owner_.assign(n, kUnassigned);
@@ -53,6 +60,15 @@ AttractorStore::AttractorStore(std::span<const Vec3f> points, double influenceRa
         largestCell = std::max(largestCell, count);
     }
     candidates_.resize(largestCell);
+}
+
+void AttractorStore::release() {
+    grid_ = SpatialGrid();
+    x_ = {}, y_ = {}, z_ = {}, key_ = {};
+    owner_ = {}, next_ = {}, prev_ = {}, head_ = {};
+    original_ = {};
+    cellBound_ = {};
+    candidates_ = {};
 }
 
 void AttractorStore::attach(std::uint32_t i, NodeId node, double d2) {

@@ -22,8 +22,12 @@ public:
     static constexpr std::int32_t kUnassigned = -1;  ///< alive, no node within d_i
     static constexpr std::int32_t kDead = -2;        ///< removed (a node came within d_k)
 
-    AttractorStore(std::span<const Vec3f> points, double influenceRadius, double killRadius,
-                   int gridSubdivision);
+    /// Takes the points' coordinates (in point index order; rearranged into cell order).
+    AttractorStore(std::vector<float> xs, std::vector<float> ys, std::vector<float> zs,
+                   double influenceRadius, double killRadius, int gridSubdivision);
+
+    /// Frees every per-point array (counts stay); nothing else may be called afterwards.
+    void release();
 
     const SpatialGrid& grid() const { return grid_; }
     std::size_t size() const { return owner_.size(); }

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "attractor_store.hpp"
 #include "growth_rules.hpp"
@@ -31,11 +32,13 @@ constexpr int kGridSubdivision = 2;  // cells of d_i / 2
 
 class Colonizer {
 public:
-    Colonizer(const ColonizeParams& params, std::span<const Vec3f> points,
-              std::span<const Shape> obstacles);
+    /// Takes the coordinates of the points (rounded to float) in point index order.
+    Colonizer(const ColonizeParams& params, std::vector<float> xs, std::vector<float> ys,
+              std::vector<float> zs, std::span<const Shape> obstacles);
     int run();
     std::size_t aliveCount() const { return store_.aliveCount(); }
-    std::vector<BranchTree> buildTrees() const;
+    /// Builds the trees; frees the points first (call once, after run()).
+    std::vector<BranchTree> buildTrees();
 
 private:
     NodeId addNode(NodeId parent, const Vec3& position, std::uint32_t tree, int iteration);
@@ -72,13 +75,14 @@ private:
     std::vector<std::pair<std::uint32_t, std::uint32_t>> gather_;
 };
 
-Colonizer::Colonizer(const ColonizeParams& params, std::span<const Vec3f> points,
-                     std::span<const Shape> obstacles)
+Colonizer::Colonizer(const ColonizeParams& params, std::vector<float> xs, std::vector<float> ys,
+                     std::vector<float> zs, std::span<const Shape> obstacles)
     : params_(params),
       obstacles_(obstacles),
       influence2_(params.influenceRadius * params.influenceRadius),
       spacing2_(minNodeSpacingSquared(params)),
-      store_(points, params.influenceRadius, params.killRadius, kGridSubdivision) {
+      store_(std::move(xs), std::move(ys), std::move(zs), params.influenceRadius, params.killRadius,
+             kGridSubdivision) {
     cellHead_.assign(store_.grid().cellCount(), kNone);
     const std::size_t roots = params.roots.size();
     for (std::size_t t = 0; t < roots; ++t) {
@@ -312,8 +316,12 @@ int Colonizer::run() {
     return k;
 }
 
-std::vector<BranchTree> Colonizer::buildTrees() const {
+std::vector<BranchTree> Colonizer::buildTrees() {
+    store_.release();
     std::vector<BranchTree> trees(trunkTip_.size());
+    std::vector<std::size_t> sizes(trees.size(), 0);
+    for (std::uint32_t t : tree_) ++sizes[t];
+    for (std::size_t t = 0; t < trees.size(); ++t) trees[t].reserve(sizes[t]);
     std::vector<NodeId> local(nodePos_.size(), kNone);
     for (std::size_t n = 0; n < nodePos_.size(); ++n) {
         BranchTree& tree = trees[tree_[n]];
@@ -339,8 +347,10 @@ ColonizeResult colonize(const ColonizeParams& params, std::span<const Vec3> poin
                         std::span<const Shape> obstacles) {
     validateColonizeParams(params);
     ColonizeResult result;
-    std::vector<Vec3f> kept;
-    kept.reserve(points.size());
+    // The points used, rounded to float, as three coordinate arrays (12 bytes per point; the
+    // colonizer rearranges them in place).
+    std::vector<float> xs, ys, zs;
+    xs.reserve(points.size()), ys.reserve(points.size()), zs.reserve(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!points[i].allFinite()) {
             throw Error("attraction point " + std::to_string(i) + " is not finite");
@@ -348,12 +358,13 @@ ColonizeResult colonize(const ColonizeParams& params, std::span<const Vec3> poin
         const bool inside = std::any_of(obstacles.begin(), obstacles.end(), [&](const Shape& o) {
             return shapeContains(o, points[i]);
         });
-        if (!inside) kept.push_back(points[i].cast<float>());
+        if (inside) continue;
+        const Vec3f p = points[i].cast<float>();
+        xs.push_back(p.x()), ys.push_back(p.y()), zs.push_back(p.z());
     }
-    result.warnings = colonizeWarnings(params, kept.size(), obstacles);
-    result.attractors = kept.size();
-    Colonizer colonizer(params, kept, obstacles);
-    std::vector<Vec3f>().swap(kept);  // the colonizer holds its own copy in grid order
+    result.warnings = colonizeWarnings(params, xs.size(), obstacles);
+    result.attractors = xs.size();
+    Colonizer colonizer(params, std::move(xs), std::move(ys), std::move(zs), obstacles);
     result.iterations = colonizer.run();
     result.attractorsLeft = colonizer.aliveCount();
     result.trees = colonizer.buildTrees();

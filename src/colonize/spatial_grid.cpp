@@ -5,10 +5,13 @@
 
 namespace ramus::colonize_detail {
 
-SpatialGrid::SpatialGrid(std::span<const Vec3f> points, double influenceRadius, int subdivision,
+SpatialGrid::SpatialGrid(std::span<const float> xs, std::span<const float> ys,
+                         std::span<const float> zs, double influenceRadius, int subdivision,
                          std::size_t maxCells, std::vector<std::uint32_t>& order) {
+    const std::size_t n = xs.size();
+    auto point = [&](std::size_t i) { return Vec3(xs[i], ys[i], zs[i]); };
     Aabb box;
-    for (const Vec3f& p : points) box.add(p.cast<double>());
+    for (std::size_t i = 0; i < n; ++i) box.add(point(i));
     if (box.empty()) box.add(Vec3::Zero());
     const Vec3 extent = box.extent();
 
@@ -33,16 +36,16 @@ SpatialGrid::SpatialGrid(std::span<const Vec3f> points, double influenceRadius, 
     // Counting sort of the points into cell order (stable: equal cells keep index order).
     const std::size_t cells = static_cast<std::size_t>(count_[0]) * count_[1] * count_[2];
     cellStart_.assign(cells + 1, 0);
-    std::vector<std::uint32_t> cellOfPoint(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const auto c = static_cast<std::uint32_t>(cellOf(points[i].cast<double>()));
+    std::vector<std::uint32_t> cellOfPoint(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto c = static_cast<std::uint32_t>(cellOf(point(i)));
         cellOfPoint[i] = c;
         ++cellStart_[c + 1];
     }
     for (std::size_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
-    order.assign(points.size(), 0);
+    order.assign(n, 0);
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         order[fill[cellOfPoint[i]]++] = static_cast<std::uint32_t>(i);
     }
 }

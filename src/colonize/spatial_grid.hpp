@@ -20,11 +20,13 @@ class SpatialGrid {
 public:
     SpatialGrid() = default;
 
-    /// Builds the grid over `points` (any count; empty gives a 1-cell grid) with cells of about
-    /// influenceRadius / subdivision, coarser if that would need more than ~maxCells cells.
-    /// `order` receives the point indices in cell order; cellStart() gives each cell's range.
-    SpatialGrid(std::span<const Vec3f> points, double influenceRadius, int subdivision,
-                std::size_t maxCells, std::vector<std::uint32_t>& order);
+    /// Builds the grid over the points (xs[i], ys[i], zs[i]) (any count; none gives a 1-cell
+    /// grid) with cells of about influenceRadius / subdivision, coarser if that would need more
+    /// than ~maxCells cells. `order` receives the point indices in cell order (stable);
+    /// cellBegin()/cellEnd() give each cell's range in that order.
+    SpatialGrid(std::span<const float> xs, std::span<const float> ys, std::span<const float> zs,
+                double influenceRadius, int subdivision, std::size_t maxCells,
+                std::vector<std::uint32_t>& order);
 
     std::size_t cellCount() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
     double cellSize() const { return cellSize_; }
