@@ -96,6 +96,23 @@ TEST(ColonizeEquivalence, PlanarDiscGivesTheSameTreeAsBruteForce) {
     expectSameResult(colonize(params, points), bruteForceColonize(params, points));
 }
 
+TEST(ColonizeEquivalence, FarFromTheOriginFloatRoundingDoesNotChangeTheTree) {
+    // Coordinates around 10^5 with steps of 1: float spacing there is ~0.008, so the float
+    // preselection works near its margin; every decision must still match the reference.
+    const Vec3 shift(1.0e5, -7.0e4, 3.0e4);
+    std::vector<Vec3> points = randomPoints(400, -20, 20, 17);
+    for (Vec3& p : points) p += shift;
+    ColonizeParams params;
+    params.influenceRadius = 6;
+    params.killRadius = 2;
+    params.step = 1;
+    params.roots = {shift + Vec3(0, -25, 0), shift + Vec3(3, -22, 1)};
+    params.maxNoGrowth = 3;
+    const ColonizeResult fast = colonize(params, points);
+    expectSameResult(fast, bruteForceColonize(params, points));
+    EXPECT_GT(fast.nodeCount(), 100u);
+}
+
 TEST(ColonizeEquivalence, IterationLimitsCutBothAtTheSameNode) {
     const std::vector<Vec3> points = randomPoints(300, -50, 50, 11);
     for (int limit : {0, 1, 2, 5, 13}) {
