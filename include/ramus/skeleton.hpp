@@ -128,6 +128,9 @@ struct Bone {
     int parent = -1;           ///< index into Skeleton::bones; −1 only for the root
     int twin = -1;             ///< the mirror twin (left ↔ right); −1 for center bones
     bool doubleJoint = false;  ///< a pelvis with two hip joints (Beckenknochen2, seed 000 §5.5.3)
+    /// Hand/foot bones of legs: the foot stands steeper than 45° to the ground, so it gets a hoof
+    /// rather than a hand-like foot (seed 000 §5.5.2, §5.6). Set by the leg placement.
+    bool hoof = false;
     Joint joint;
     Vec3 extents = Vec3::Zero();  ///< px: length (x), height (y), width (z)
 
