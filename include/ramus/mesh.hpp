@@ -1,6 +1,7 @@
 // Triangle meshes as flat arrays, ready for glTF/OBJ export and preview rendering.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,15 +27,20 @@ struct MeshPrimitive {
     std::string name;              ///< e.g. "bark", "leaves"
 };
 
-/// Indexed triangle mesh. positions is always filled; normals, tangents and uvs are either
-/// empty or the same length as positions. Triangles are counter-clockwise seen from outside.
-/// tangents are glTF tangents: xyz unit tangent, w = ±1 bitangent sign.
+/// Indexed triangle mesh. positions is always filled; normals, tangents, uvs, joints and weights
+/// are either empty or the same length as positions. Triangles are counter-clockwise seen from
+/// outside. tangents are glTF tangents: xyz unit tangent, w = ±1 bitangent sign.
+/// joints and weights (glTF JOINTS_0 / WEIGHTS_0) skin the mesh: both empty or both filled;
+/// joints index into the Skin of the node that holds the mesh, weights are ≥ 0 and sum to 1
+/// per vertex (unused slots: weight 0). Positions are the bind pose.
 struct Mesh {
     std::string name = "mesh";
     std::vector<Vec3f> positions;
     std::vector<Vec3f> normals;
     std::vector<Vec4f> tangents;
     std::vector<Vec2f> uvs;
+    std::vector<std::array<std::uint16_t, 4>> joints;  ///< per vertex: 4 indices into Skin::joints
+    std::vector<Vec4f> weights;                        ///< per vertex: the 4 joints' weights
     std::vector<std::uint32_t> indices;
     std::vector<MeshPrimitive> primitives;  ///< cover indices; empty = one primitive, material 0
     std::vector<Material> materials;
@@ -45,7 +51,9 @@ struct Mesh {
 };
 
 /// Appends `other` to `mesh` (indices, primitives and materials re-based). Attribute arrays
-/// that one side lacks are dropped from the result unless both have them.
+/// that one side lacks are dropped from the result unless both have them (joints and weights
+/// are kept or dropped together). Joint indices are copied unchanged: both meshes must refer to
+/// the same Skin.
 void appendMesh(Mesh& mesh, const Mesh& other);
 
 }  // namespace ramus

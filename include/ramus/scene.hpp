@@ -18,6 +18,21 @@ struct SceneNode {
     Vec3 scale = Vec3::Ones();
     int mesh = -1;           ///< index into Scene::meshes, or -1
     std::string extrasJson;  ///< a JSON object written as the node's "extras", or empty
+    /// Index into Scene::skins that deforms this node's mesh, or -1. A skinned node must hold a
+    /// mesh with joints and weights; glTF ignores its transform, so keep it a root node with the
+    /// identity transform (the validator warns otherwise).
+    int skin = -1;
+};
+
+/// A glTF skin (§3.7.3): the joint nodes that deform a mesh and their inverse bind matrices.
+/// A vertex's position is Σ weightᵢ · world(joints[jointᵢ]) · inverseBindMatrices[jointᵢ] · p.
+struct Skin {
+    std::string name;
+    std::vector<int> joints;  ///< node indices, distinct; Mesh::joints index into this list
+    int skeleton = -1;        ///< the joints' common root node (an ancestor of all), or -1
+    /// One per joint (world → joint space at bind time), bottom row (0, 0, 0, 1); empty means
+    /// identity matrices.
+    std::vector<Mat4> inverseBindMatrices;
 };
 
 /// A scene in glTF's conventions: Y up, metres, front +Z. Empty nodes + one mesh means the
@@ -25,6 +40,7 @@ struct SceneNode {
 struct Scene {
     std::vector<Mesh> meshes;
     std::vector<SceneNode> nodes;
+    std::vector<Skin> skins;  ///< referenced by SceneNode::skin; empty for rigid scenes
     std::string generator = "ramus";
     std::string extrasJson;  ///< a JSON object written as the scene's "extras", or empty
 

@@ -2,6 +2,8 @@
 // glTF-2.0.html), §3.6 binary data storage (accessors, buffer views, alignment), §3.7 meshes,
 // §3.9 materials, §4.4 GLB file format (12-byte header, JSON chunk padded with spaces, BIN
 // chunk padded with zeros, 4-byte alignment).
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -21,6 +23,7 @@ static_assert(std::endian::native == std::endian::little, "GLB is little-endian"
 
 using Json = nlohmann::ordered_json;
 
+constexpr int kUnsignedByte = 5121;
 constexpr int kUnsignedShort = 5123;
 constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;
@@ -77,6 +80,28 @@ std::vector<Vec4f> unitTangents(const std::vector<Vec4f>& tangents,
     return out;
 }
 
+// glTF WEIGHTS_0: each vertex's weights divided by their sum (checkScene allows ±0.001), the
+// weights of a joint listed twice merged into its first slot, and JOINTS_0 entries of unused
+// slots set to 0 (the validator warns about non-zero joints with zero weight).
+void normalizeSkinning(const Mesh& mesh, std::vector<std::array<std::uint16_t, 4>>& joints,
+                       std::vector<Vec4f>& weights) {
+    joints = mesh.joints;
+    weights.resize(mesh.weights.size());
+    for (std::size_t v = 0; v < joints.size(); ++v) {
+        std::array<double, 4> w{};
+        for (int k = 0; k < 4; ++k) {
+            int first = 0;
+            while (joints[v][first] != joints[v][k]) ++first;
+            w[first] += mesh.weights[v][k];
+        }
+        const double sum = w[0] + w[1] + w[2] + w[3];
+        for (int k = 0; k < 4; ++k) {
+            weights[v][k] = static_cast<float>(w[k] / sum);
+            if (weights[v][k] == 0.0f) joints[v][k] = 0;
+        }
+    }
+}
+
 Json materialJson(const Material& m) {
     Json pbr;
     pbr["baseColorFactor"] = jsonVec(m.baseColor.data(), 4);
@@ -124,8 +149,10 @@ private:
                     const char* type);
     int addMaterial(const Material& material);
     int addVertexAttributes(const Mesh& mesh, Json& attributes);
+    void addSkinAttributes(const Mesh& mesh, Json& attributes);
     int addMesh(const Mesh& mesh);
     void addNodes(const std::vector<int>& meshIndex);
+    void addSkins();
     Json sceneJson() const;
 
     const Scene& scene_;
@@ -136,6 +163,7 @@ private:
     Json materials_ = Json::array();
     Json meshes_ = Json::array();
     Json nodes_ = Json::array();
+    Json skins_ = Json::array();
     std::vector<int> roots_;
     std::vector<Material> materialKeys_;
 };
@@ -151,7 +179,7 @@ int GlbBuilder::addBufferView(const std::vector<T>& data, int target) {
     view["buffer"] = 0;
     view["byteOffset"] = offset;
     view["byteLength"] = bytes;
-    view["target"] = target;
+    if (target != 0) view["target"] = target;  // inverse bind matrices have none
     bufferViews_.push_back(std::move(view));
     return static_cast<int>(bufferViews_.size()) - 1;
 }
@@ -203,7 +231,33 @@ int GlbBuilder::addVertexAttributes(const Mesh& mesh, Json& attributes) {
         const int view = addBufferView(mesh.uvs, kArrayBuffer);
         attributes["TEXCOORD_0"] = addAccessor(view, 0, kFloat, n, "VEC2");
     }
+    if (!mesh.joints.empty()) addSkinAttributes(mesh, attributes);
     return position;
+}
+
+// JOINTS_0 as UNSIGNED_BYTE when every joint index fits, else UNSIGNED_SHORT; WEIGHTS_0 as
+// normalised FLOAT.
+void GlbBuilder::addSkinAttributes(const Mesh& mesh, Json& attributes) {
+    std::vector<std::array<std::uint16_t, 4>> joints;
+    std::vector<Vec4f> weights;
+    normalizeSkinning(mesh, joints, weights);
+    std::uint16_t maxJoint = 0;
+    for (const auto& j : joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
+    int jointView = 0;
+    if (maxJoint <= 255) {
+        std::vector<std::array<std::uint8_t, 4>> narrow(joints.size());
+        for (std::size_t v = 0; v < joints.size(); ++v) {
+            for (int k = 0; k < 4; ++k) narrow[v][k] = static_cast<std::uint8_t>(joints[v][k]);
+        }
+        jointView = addBufferView(narrow, kArrayBuffer);
+    } else {
+        jointView = addBufferView(joints, kArrayBuffer);
+    }
+    const std::size_t n = joints.size();
+    attributes["JOINTS_0"] =
+        addAccessor(jointView, 0, maxJoint <= 255 ? kUnsignedByte : kUnsignedShort, n, "VEC4");
+    attributes["WEIGHTS_0"] =
+        addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4");
 }
 
 // One glTF mesh: shared vertex accessors, one index buffer view, one index accessor and one
@@ -267,7 +321,10 @@ void GlbBuilder::addNodes(const std::vector<int>& meshIndex) {
         Json node;
         if (!n.name.empty()) node["name"] = n.name;
         if (!children[i].empty()) node["children"] = children[i];
-        if (n.mesh >= 0 && meshIndex[n.mesh] >= 0) node["mesh"] = meshIndex[n.mesh];
+        if (n.mesh >= 0 && meshIndex[n.mesh] >= 0) {
+            node["mesh"] = meshIndex[n.mesh];
+            if (n.skin >= 0) node["skin"] = n.skin;
+        }
         const Eigen::Quaterniond q = n.rotation.normalized();
         if (q.coeffs() != Eigen::Quaterniond::Identity().coeffs()) {
             node["rotation"] = {q.x(), q.y(), q.z(), q.w()};
@@ -281,6 +338,28 @@ void GlbBuilder::addNodes(const std::vector<int>& meshIndex) {
                 n.extrasJson, context_ + ": node " + std::to_string(i) + " ('" + n.name + "')");
         }
         nodes_.push_back(std::move(node));
+    }
+}
+
+// Skins with their inverse bind matrices (MAT4 FLOAT, column-major, in a buffer view without
+// a target, as glTF §3.7.3.1 asks).
+void GlbBuilder::addSkins() {
+    for (const Skin& skin : scene_.skins) {
+        Json j;
+        if (!skin.name.empty()) j["name"] = skin.name;
+        if (!skin.inverseBindMatrices.empty()) {
+            std::vector<float> matrices;
+            matrices.reserve(16 * skin.inverseBindMatrices.size());
+            for (const Mat4& m : skin.inverseBindMatrices) {
+                for (int k = 0; k < 16; ++k)
+                    matrices.push_back(static_cast<float>(m(k % 4, k / 4)));
+            }
+            j["inverseBindMatrices"] = addAccessor(addBufferView(matrices, 0), 0, kFloat,
+                                                   skin.inverseBindMatrices.size(), "MAT4");
+        }
+        if (skin.skeleton >= 0) j["skeleton"] = skin.skeleton;
+        j["joints"] = skin.joints;
+        skins_.push_back(std::move(j));
     }
 }
 
@@ -298,6 +377,7 @@ std::string GlbBuilder::encode() {
     std::vector<int> meshIndex;
     for (const Mesh& mesh : scene_.meshes) meshIndex.push_back(addMesh(mesh));
     addNodes(meshIndex);
+    addSkins();
     bin_.resize((bin_.size() + 3) & ~std::size_t{3}, '\0');
 
     Json root;
@@ -308,6 +388,7 @@ std::string GlbBuilder::encode() {
     root["scenes"] = Json::array({sceneJson()});
     if (!nodes_.empty()) root["nodes"] = nodes_;
     if (!meshes_.empty()) root["meshes"] = meshes_;
+    if (!skins_.empty()) root["skins"] = skins_;
     if (!materials_.empty()) root["materials"] = materials_;
     if (!accessors_.empty()) root["accessors"] = accessors_;
     if (!bufferViews_.empty()) root["bufferViews"] = bufferViews_;

@@ -23,8 +23,10 @@ int componentCount(int type) {
             return 3;
         case TINYGLTF_TYPE_VEC4:
             return 4;
+        case TINYGLTF_TYPE_MAT4:
+            return 16;  // inverse bind matrices: columns are 4-byte aligned for every type
         default:
-            return 0;  // matrices are never vertex attributes we read
+            return 0;  // MAT2/MAT3 columns need padding for 1- and 2-byte types: not read
     }
 }
 

@@ -23,8 +23,8 @@ const tinygltf::Accessor& accessorAt(const Reader& r, int index, const char* wha
 
 /// All elements of accessor `index` as numbers (count × components, row by row): float,
 /// normalized or plain integer components, byte strides and sparse substitution handled.
-/// Throws Error when the element type differs from `components` or the data runs past its
-/// buffer view or buffer.
+/// MAT4 elements have 16 components (column-major). Throws Error when the element type
+/// differs from `components` or the data runs past its buffer view or buffer.
 std::vector<double> readAccessor(const Reader& r, int index, int components, const char* what);
 
 /// The primitive's vertex indices (0..vertexCount-1 in order when it has none); Error for float

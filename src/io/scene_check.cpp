@@ -1,5 +1,6 @@
 #include "io/scene_check.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -8,6 +9,9 @@
 namespace ramus::io {
 
 namespace {
+
+// How far a vertex's weights may sum from 1 (the writer normalises them exactly).
+constexpr float kWeightSumTolerance = 1e-3f;
 
 [[noreturn]] void fail(const std::string& context, const std::string& what) {
     throw Error(context + ": " + what);
@@ -81,12 +85,36 @@ void checkPrimitives(const Mesh& mesh, const std::string& where) {
     }
 }
 
+// Joints and weights come together; weights are finite, non-negative and sum to 1.
+void checkSkinAttributes(const Mesh& mesh, const std::string& where) {
+    const std::size_t n = mesh.positions.size();
+    checkAttribute(mesh.weights, n, "weights", where);
+    if (!mesh.joints.empty() && mesh.joints.size() != n) {
+        fail(where, "joints has " + std::to_string(mesh.joints.size()) +
+                        " entries; expected 0 or " + std::to_string(n) + " (one per vertex)");
+    }
+    if (mesh.joints.empty() != mesh.weights.empty()) {
+        fail(where, "has " + std::to_string(mesh.joints.size()) + " joints and " +
+                        std::to_string(mesh.weights.size()) +
+                        " weights; expected both or neither (skinning needs both)");
+    }
+    for (std::size_t i = 0; i < mesh.weights.size(); ++i) {
+        const Vec4f& w = mesh.weights[i];
+        if (w.minCoeff() < 0.0f || std::abs(w.sum() - 1.0f) > kWeightSumTolerance) {
+            fail(where, "weights of vertex " + std::to_string(i) + " are (" + formatFloat(w[0]) +
+                            ", " + formatFloat(w[1]) + ", " + formatFloat(w[2]) + ", " +
+                            formatFloat(w[3]) + "); expected non-negative weights summing to 1");
+        }
+    }
+}
+
 void checkMesh(const Mesh& mesh, const std::string& where) {
     const std::size_t n = mesh.positions.size();
     checkAttribute(mesh.positions, n, "positions", where);
     checkAttribute(mesh.normals, n, "normals", where);
     checkAttribute(mesh.tangents, n, "tangents", where);
     checkAttribute(mesh.uvs, n, "uvs", where);
+    checkSkinAttributes(mesh, where);
     if (mesh.indices.size() % 3 != 0) {
         fail(where, "has " + std::to_string(mesh.indices.size()) +
                         " indices; expected a multiple of 3 (triangles)");
@@ -115,9 +143,100 @@ void checkNode(const Scene& scene, std::size_t i, const std::string& context) {
     if (!allFinite(node.translation) || !allFinite(node.scale)) {
         fail(where, "translation or scale is not finite");
     }
+    if (node.skin < -1 || node.skin >= static_cast<int>(scene.skins.size())) {
+        fail(where, "skin is " + std::to_string(node.skin) + "; expected -1 or < " +
+                        std::to_string(scene.skins.size()));
+    }
+    if (node.mesh >= 0) {
+        const Mesh& mesh = scene.meshes[node.mesh];
+        if (node.skin >= 0 && mesh.joints.empty()) {
+            fail(where, "has skin " + std::to_string(node.skin) + " but its mesh '" + mesh.name +
+                            "' has no joints and weights");
+        }
+        if (node.skin < 0 && !mesh.joints.empty()) {
+            fail(where, "holds the skinned mesh '" + mesh.name + "' but has no skin");
+        }
+    } else if (node.skin >= 0) {
+        fail(where, "has skin " + std::to_string(node.skin) + " but no mesh");
+    }
     const double norm = node.rotation.norm();
     if (!std::isfinite(norm) || norm < 1e-6) {
         fail(where, "rotation is not a valid quaternion (norm " + std::to_string(norm) + ")");
+    }
+}
+
+bool isAncestorOrSelf(const Scene& scene, int ancestor, int node) {
+    for (int i = node; i >= 0; i = scene.nodes[i].parent) {
+        if (i == ancestor) return true;
+    }
+    return false;
+}
+
+void checkInverseBindMatrices(const Skin& skin, const std::string& where) {
+    if (!skin.inverseBindMatrices.empty() &&
+        skin.inverseBindMatrices.size() != skin.joints.size()) {
+        fail(where, "has " + std::to_string(skin.inverseBindMatrices.size()) +
+                        " inverse bind matrices; expected 0 or " +
+                        std::to_string(skin.joints.size()) + " (one per joint)");
+    }
+    for (std::size_t j = 0; j < skin.inverseBindMatrices.size(); ++j) {
+        const Mat4& m = skin.inverseBindMatrices[j];
+        const double det = m.topLeftCorner<3, 3>().determinant();
+        if (!allFinite(m.reshaped()) || m.row(3) != Eigen::RowVector4d(0.0, 0.0, 0.0, 1.0) ||
+            !(std::abs(det) > 1e-30)) {
+            fail(where, "inverse bind matrix " + std::to_string(j) +
+                            " is not an invertible affine matrix with bottom row (0, 0, 0, 1)");
+        }
+    }
+}
+
+// Joints are distinct existing nodes below the skeleton root; one matrix per joint.
+void checkSkin(const Scene& scene, std::size_t k, const std::string& context) {
+    const Skin& skin = scene.skins[k];
+    const std::string where = context + ": skin " + std::to_string(k) + " ('" + skin.name + "')";
+    const int nodeCount = static_cast<int>(scene.nodes.size());
+    if (skin.joints.empty()) fail(where, "has no joints; expected at least one joint node");
+    for (int joint : skin.joints) {
+        if (joint < 0 || joint >= nodeCount) {
+            fail(where, "joint node " + std::to_string(joint) + " does not exist; expected < " +
+                            std::to_string(nodeCount));
+        }
+    }
+    std::vector<int> sorted = skin.joints;
+    std::sort(sorted.begin(), sorted.end());
+    const auto duplicate = std::adjacent_find(sorted.begin(), sorted.end());
+    if (duplicate != sorted.end()) {
+        fail(where,
+             "lists node " + std::to_string(*duplicate) + " twice; expected distinct joints");
+    }
+    if (skin.skeleton < -1 || skin.skeleton >= nodeCount) {
+        fail(where, "skeleton is " + std::to_string(skin.skeleton) + "; expected -1 or < " +
+                        std::to_string(nodeCount));
+    }
+    for (int joint : skin.joints) {
+        if (skin.skeleton >= 0 && !isAncestorOrSelf(scene, skin.skeleton, joint)) {
+            fail(where, "joint node " + std::to_string(joint) + " is not below the skeleton root " +
+                            std::to_string(skin.skeleton));
+        }
+    }
+    checkInverseBindMatrices(skin, where);
+}
+
+// Every joint index of a skinned mesh names a joint of the skin of each node that holds it.
+void checkSkinnedNode(const Scene& scene, std::size_t i, const std::string& context) {
+    const SceneNode& node = scene.nodes[i];
+    if (node.skin < 0) return;
+    const std::size_t jointCount = scene.skins[node.skin].joints.size();
+    const Mesh& mesh = scene.meshes[node.mesh];
+    for (std::size_t v = 0; v < mesh.joints.size(); ++v) {
+        for (std::uint16_t j : mesh.joints[v]) {
+            if (j >= jointCount) {
+                fail(context + ": node " + std::to_string(i) + " ('" + node.name + "')",
+                     "vertex " + std::to_string(v) + " of mesh '" + mesh.name + "' uses joint " +
+                         std::to_string(j) + "; expected < " + std::to_string(jointCount) +
+                         " (the joints of skin " + std::to_string(node.skin) + ")");
+            }
+        }
     }
 }
 
@@ -125,6 +244,16 @@ void checkNode(const Scene& scene, std::size_t i, const std::string& context) {
 
 void checkScene(const Scene& scene, const std::string& context) {
     for (std::size_t i = 0; i < scene.nodes.size(); ++i) checkNode(scene, i, context);
+    for (std::size_t k = 0; k < scene.skins.size(); ++k) checkSkin(scene, k, context);
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) checkSkinnedNode(scene, i, context);
+    if (scene.nodes.empty()) {
+        for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+            if (!scene.meshes[m].joints.empty()) {
+                fail(context + ": " + meshLabel(scene.meshes[m], m),
+                     "is skinned but the scene has no nodes; expected a node with a skin");
+            }
+        }
+    }
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         checkMesh(scene.meshes[m], context + ": " + meshLabel(scene.meshes[m], m));
     }

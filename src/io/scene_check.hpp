@@ -14,7 +14,12 @@ namespace ramus::io {
 /// mesh: attribute arrays empty or of vertex count, finite attributes, whole triangles, indices
 /// below the vertex count, primitives inside the index buffer referencing existing materials
 /// (material 0 is allowed when the mesh has no materials), material factors finite and in
-/// [0, 1]. `context` is usually the output path.
+/// [0, 1]. Skins: joints and weights both present or both absent, weights ≥ 0 summing to 1
+/// (±0.001); node skins in range and only on nodes whose mesh is skinned (and every skinned
+/// mesh on a node with a skin, so a scene without nodes has no skinned mesh); skin joints
+/// distinct existing nodes below the skin's skeleton root; one invertible inverse bind matrix
+/// with bottom row (0, 0, 0, 1) per joint (or none); every vertex joint index below the joint
+/// count of the skin of each node holding the mesh. `context` is usually the output path.
 void checkScene(const Scene& scene, const std::string& context);
 
 /// The primitives of `mesh` that draw at least one triangle, with the implicit "one primitive

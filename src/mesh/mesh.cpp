@@ -50,6 +50,11 @@ void appendMesh(Mesh& mesh, const Mesh& other) {
     appendAttribute(mesh.tangents, other.tangents,
                     keep(mesh.tangents.size(), other.tangents.size()));
     appendAttribute(mesh.uvs, other.uvs, keep(mesh.uvs.size(), other.uvs.size()));
+    // Joints and weights only make sense together: keep both or neither.
+    const bool skinned = keep(mesh.joints.size(), other.joints.size()) &&
+                         keep(mesh.weights.size(), other.weights.size());
+    appendAttribute(mesh.joints, other.joints, skinned);
+    appendAttribute(mesh.weights, other.weights, skinned);
     mesh.positions.insert(mesh.positions.end(), other.positions.begin(), other.positions.end());
     mesh.indices.reserve(mesh.indices.size() + other.indices.size());
     for (std::uint32_t i : other.indices) mesh.indices.push_back(i + vertexBase);
