@@ -115,7 +115,9 @@ struct ColonizeConfig {
 
 /// Parses a config from JSON text. Every value is checked; errors read
 /// "FILE: KEY.PATH: what; expected …, got …" (e.g. "tree.json: envelopes[2].radius: …").
-/// Unknown keys are errors (they are usually typos).
+/// Unknown keys are errors (they are usually typos). The files of "mesh" shapes are read here
+/// (readMeshVolume), relative to the folder of `fileName`; their errors are reported under the
+/// shape's "file" key.
 ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::string& fileName);
 
 /// Reads and parses a config file; pointsFile is resolved relative to the file's folder.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -11,6 +12,8 @@
 #include "ramus/math.hpp"
 
 namespace ramus {
+
+class MeshVolume;  // ramus/mesh_volume.hpp
 
 /// The kinds of shape. "Anchor" is the point `Shape::offset` places:
 enum class ShapeKind {
@@ -24,10 +27,14 @@ enum class ShapeKind {
     /// r < `innerRadius` (0 = a full disc). As an obstacle it blocks the infinite prism along z
     /// (and must have innerRadius = 0).
     Disc,
+    /// A closed triangle mesh (`mesh`, e.g. from readMeshVolume): a point p of the mesh file
+    /// lies at offset + scale · p. Inside by the even-odd rule. Sampled by rejection in its
+    /// bounding box, so sampleShape maps to the box only.
+    Mesh,
 };
 
 /// Lower-case name as used in config files ("sphere", "ellipsoid", "box", "cylinder", "cone",
-/// "hemisphere", "disc").
+/// "hemisphere", "disc", "mesh").
 const char* shapeKindName(ShapeKind kind);
 
 /// A closed shape at an offset. Only the fields its kind names are used; all are model units
@@ -40,10 +47,12 @@ struct Shape {
     double innerRadius = 0.0;
     Vec3 radii = Vec3::Ones();
     Vec3 size = Vec3::Ones();
+    double scale = 1.0;                      ///< Mesh: factor on the file's coordinates (> 0)
+    std::shared_ptr<const MeshVolume> mesh;  ///< Mesh: the closed surface (required)
 };
 
 /// Empty string when `shape` is valid, else a sentence naming the first bad field
-/// (e.g. "radius must be > 0 (model units); got -2").
+/// (e.g. "radius must be > 0 (model units); got -2"; "mesh is missing" for a Mesh without one).
 std::string validateShape(const Shape& shape);
 
 /// Axis-aligned bounds of the shape (for a disc: zero thickness in z).
@@ -51,7 +60,7 @@ Aabb shapeBounds(const Shape& shape);
 
 /// A convex "inside" function: ≤ 0 exactly on the closed shape, > 0 outside. Not a true
 /// distance, but it grows with the distance. A disc with a hole is not convex: its value is
-/// still ≤ 0 exactly on the annulus.
+/// still ≤ 0 exactly on the annulus. A mesh gives −1 inside and +1 outside (no distance).
 double shapeInsideValue(const Shape& shape, const Vec3& p);
 
 /// True when p lies in the closed shape (for a disc: in the prism along z over the annulus).
@@ -59,11 +68,13 @@ bool shapeContains(const Shape& shape, const Vec3& p);
 
 /// True when the segment [a, b] meets the closed shape. Exact up to ~1e-9 of the segment's
 /// length (golden-section minimum of the convex inside function along the segment; for a disc
-/// with a hole: meets the outer disc and is not wholly inside the hole).
+/// with a hole: meets the outer disc and is not wholly inside the hole; for a mesh: crosses or
+/// touches its surface, or lies inside, see MeshVolume::segmentHits).
 bool segmentHitsShape(const Shape& shape, const Vec3& a, const Vec3& b);
 
 /// Maps three uniform numbers in [0, 1) to a point uniformly distributed in the shape's volume
-/// (area for a disc). Pure function: the same numbers give the same point.
+/// (area for a disc). Pure function: the same numbers give the same point. For a mesh: a point
+/// uniform in its bounding box (sampleEnvelope keeps only those inside).
 Vec3 sampleShape(const Shape& shape, double u1, double u2, double u3);
 
 /// An envelope: a shape to fill with `pointCount` attraction points drawn with its own `seed`
@@ -75,8 +86,14 @@ struct Envelope {
 };
 
 /// The points of one envelope: pointCount points, each from three uniform numbers of
-/// Rng::forStream(hashCombine(baseSeed, envelope.seed), 0). Same inputs, same points.
+/// Rng::forStream(hashCombine(baseSeed, envelope.seed), 0). Same inputs, same points. A mesh
+/// envelope draws points uniform in its bounding box and keeps those inside (rejection
+/// sampling) until it has pointCount; after kMaxMeshDrawsPerPoint · pointCount draws it stops
+/// with fewer (only a mesh filling less than ~1/10 000 of its box can get there).
 std::vector<Vec3> sampleEnvelope(const Envelope& envelope, std::uint64_t baseSeed = 0);
+
+/// Draws per requested point after which mesh rejection sampling gives up.
+inline constexpr std::uint64_t kMaxMeshDrawsPerPoint = 10000;
 
 /// The points of all envelopes, in envelope order, without those inside any obstacle
 /// (removed, not replaced). No envelopes → empty.

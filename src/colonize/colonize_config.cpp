@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -12,6 +14,7 @@
 #include "ramus/colonize.hpp"
 #include "ramus/error.hpp"
 #include "ramus/file_util.hpp"
+#include "ramus/mesh_volume.hpp"
 
 namespace ramus {
 
@@ -120,14 +123,14 @@ ShapeKind parseShapeKind(const ConfigReader& r, const Json& value, const std::st
         {"sphere", ShapeKind::Sphere}, {"ellipsoid", ShapeKind::Ellipsoid},
         {"box", ShapeKind::Box},       {"cylinder", ShapeKind::Cylinder},
         {"cone", ShapeKind::Cone},     {"hemisphere", ShapeKind::Hemisphere},
-        {"disc", ShapeKind::Disc}};
+        {"disc", ShapeKind::Disc},     {"mesh", ShapeKind::Mesh}};
     if (value.is_string()) {
         for (const auto& [name, kind] : kinds) {
             if (value.get<std::string>() == name) return kind;
         }
     }
     r.fail(path, "unknown shape " + value.dump() +
-                     "; expected sphere, ellipsoid, box, cylinder, cone, hemisphere or disc");
+                     "; expected sphere, ellipsoid, box, cylinder, cone, hemisphere, disc or mesh");
 }
 
 // The size keys each shape takes (besides shape, center/offset, and points/seed for envelopes).
@@ -145,11 +148,54 @@ std::set<std::string> shapeSizeKeys(ShapeKind kind) {
             return {"radius", "height"};
         case ShapeKind::Disc:
             return {"radius", "inner_radius"};
+        case ShapeKind::Mesh:
+            return {"file", "scale"};
     }
     return {};
 }
 
-Shape parseShape(const ConfigReader& r, const Json& j, const std::string& path, bool envelope) {
+// Reads the closed meshes of "mesh" shapes, each file once, relative to the config's folder.
+class MeshFiles {
+public:
+    explicit MeshFiles(const std::string& configFile)
+        : folder_(std::filesystem::path(configFile).parent_path()) {}
+
+    std::shared_ptr<const MeshVolume> load(const ConfigReader& r, const Json& value,
+                                           const std::string& path) {
+        if (!value.is_string() || value.get<std::string>().empty()) {
+            r.fail(path, "expected a mesh file name (.obj, .glb, .gltf), got " + value.dump());
+        }
+        std::filesystem::path file(value.get<std::string>());
+        if (file.is_relative()) file = folder_ / file;
+        const std::string key = file.lexically_normal().string();
+        auto it = loaded_.find(key);
+        if (it != loaded_.end()) return it->second;
+        try {
+            auto mesh = std::make_shared<const MeshVolume>(readMeshVolume(key));
+            return loaded_.emplace(key, std::move(mesh)).first->second;
+        } catch (const Error& e) {
+            r.fail(path, e.what());
+        }
+    }
+
+private:
+    std::filesystem::path folder_;
+    std::map<std::string, std::shared_ptr<const MeshVolume>> loaded_;
+};
+
+// The keys of a "mesh" shape: file (required) and scale (default 1).
+void parseMeshKeys(const ConfigReader& r, const Json& j, const std::string& path, Shape& s,
+                   MeshFiles& meshes) {
+    if (!j.contains("file")) r.fail(path, "missing key \"file\" for a mesh");
+    if (j.contains("scale")) {
+        s.scale = r.number(j["scale"], ConfigReader::join(path, "scale"), 0.0, ConfigReader::kMax,
+                           true, "factor on the mesh file's coordinates");
+    }
+    s.mesh = meshes.load(r, j["file"], ConfigReader::join(path, "file"));
+}
+
+Shape parseShape(const ConfigReader& r, const Json& j, const std::string& path, bool envelope,
+                 MeshFiles& meshes) {
     if (!j.is_object()) r.fail(path, "expected an object {\"shape\": …}, got " + j.dump());
     if (!j.contains("shape")) r.fail(path, "missing key \"shape\"");
     Shape s;
@@ -165,6 +211,10 @@ Shape parseShape(const ConfigReader& r, const Json& j, const std::string& path, 
     if (j.contains(anchor)) {
         s.offset = r.vec3(j[anchor], ConfigReader::join(path, anchor), ConfigReader::kLowest, false,
                           "model units");
+    }
+    if (s.kind == ShapeKind::Mesh) {
+        parseMeshKeys(r, j, path, s, meshes);
+        return s;
     }
     for (const std::string& key : shapeSizeKeys(s.kind)) {
         const std::string keyPath = ConfigReader::join(path, key);
@@ -296,7 +346,7 @@ void parseGrowth(const ConfigReader& r, const Json& j, ColonizeParams& p) {
 }
 
 // "envelopes" (shapes with a point count and a seed) and "obstacles" (plain shapes).
-void parseShapeLists(const ConfigReader& r, const Json& j, ColonizeConfig& c) {
+void parseShapeLists(const ConfigReader& r, const Json& j, ColonizeConfig& c, MeshFiles& meshes) {
     for (const char* key : {"envelopes", "obstacles"}) {
         if (!j.contains(key)) continue;
         const Json& list = j[key];
@@ -304,7 +354,7 @@ void parseShapeLists(const ConfigReader& r, const Json& j, ColonizeConfig& c) {
         const bool envelope = std::string(key) == "envelopes";
         for (std::size_t i = 0; i < list.size(); ++i) {
             const std::string path = std::string(key) + "[" + std::to_string(i) + "]";
-            const Shape shape = parseShape(r, list[i], path, envelope);
+            const Shape shape = parseShape(r, list[i], path, envelope, meshes);
             if (!envelope) {
                 c.obstacles.push_back(shape);
                 continue;
@@ -351,7 +401,8 @@ ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::strin
         c.curveReduction = r.number(j["curve_reduction"], "curve_reduction", 0.0, 0.999999, false,
                                     "max_K, dot product of unit edge directions; 0 = off");
     }
-    parseShapeLists(r, j, c);
+    MeshFiles meshes(fileName);
+    parseShapeLists(r, j, c, meshes);
     if (j.contains("points_file")) {
         if (!j["points_file"].is_string() || j["points_file"].get<std::string>().empty()) {
             r.fail("points_file", "expected a file name, got " + j["points_file"].dump());

@@ -1,13 +1,15 @@
 // Based on: seed 002 §3.3 and §4.3.2 (envelopes filled with N random points, each with its own
 // seed; sphere and cylinder), SPEC §C (box, ellipsoid, cone, hemisphere, obstacles); uniform
 // volume sampling by inverse transform (e.g. Pharr, Jakob, Humphreys, "Physically Based
-// Rendering", 4th ed., §A.5: uniform sphere and disc sampling).
+// Rendering", 4th ed., §A.5: uniform sphere and disc sampling); rejection sampling in the
+// bounding box for closed meshes (MeshVolume, mesh_volume.cpp).
 #include "ramus/envelope.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "ramus/mesh_volume.hpp"
 #include "ramus/rng.hpp"
 
 namespace ramus {
@@ -28,6 +30,8 @@ const char* shapeKindName(ShapeKind kind) {
             return "hemisphere";
         case ShapeKind::Disc:
             return "disc";
+        case ShapeKind::Mesh:
+            return "mesh";
     }
     return "?";
 }
@@ -54,10 +58,21 @@ double axisDistance(const Vec3& p, const Vec3& c) {
     return std::hypot(p.x() - c.x(), p.z() - c.z());
 }
 
+// A point of the world in the mesh file's coordinates.
+Vec3 toMeshCoordinates(const Shape& s, const Vec3& p) { return (p - s.offset) / s.scale; }
+
 }  // namespace
 
 std::string validateShape(const Shape& s) {
     if (!s.offset.allFinite()) return "offset must be three finite numbers";
+    if (s.kind == ShapeKind::Mesh) {
+        if (!s.mesh) return "mesh is missing (a closed triangle mesh is required)";
+        if (!positive(s.scale)) {
+            std::ostringstream out;
+            out << "scale must be a finite number > 0 (factor); got " << s.scale;
+            return out.str();
+        }
+    }
     if (usesRadius(s.kind) && !positive(s.radius)) return positiveMessage("radius", s.radius);
     if (usesHeight(s.kind) && !positive(s.height)) return positiveMessage("height", s.height);
     if (s.kind == ShapeKind::Ellipsoid) {
@@ -109,6 +124,12 @@ Aabb shapeBounds(const Shape& s) {
             box.add(c - Vec3(s.radius, s.radius, 0.0));
             box.add(c + Vec3(s.radius, s.radius, 0.0));
             break;
+        case ShapeKind::Mesh:
+            if (s.mesh) {
+                box.add(c + s.scale * s.mesh->bounds().min);
+                box.add(c + s.scale * s.mesh->bounds().max);
+            }
+            break;
     }
     return box;
 }
@@ -133,6 +154,8 @@ double shapeInsideValue(const Shape& s, const Vec3& p) {
             const double r = std::hypot(d.x(), d.y());
             return std::max(r - s.radius, s.innerRadius - r);
         }
+        case ShapeKind::Mesh:
+            return s.mesh && s.mesh->contains(toMeshCoordinates(s, p)) ? -1.0 : 1.0;
     }
     return 1.0;
 }
@@ -174,6 +197,9 @@ bool segmentHitsShape(const Shape& s, const Vec3& a, const Vec3& b) {
         if (std::max(a[i], b[i]) < bounds.min[i] || std::min(a[i], b[i]) > bounds.max[i]) {
             return false;
         }
+    }
+    if (s.kind == ShapeKind::Mesh) {
+        return s.mesh && s.mesh->segmentHits(toMeshCoordinates(s, a), toMeshCoordinates(s, b));
     }
     if (!segmentHitsConvexPart(s, a, b)) return false;
     if (s.kind != ShapeKind::Disc || s.innerRadius <= 0.0) return true;
@@ -217,12 +243,38 @@ Vec3 sampleShape(const Shape& s, double u1, double u2, double u3) {
             const double r = std::sqrt(r2 + u1 * (s.radius * s.radius - r2));
             return s.offset + Vec3(r * std::cos(phi), r * std::sin(phi), 0.0);
         }
+        case ShapeKind::Mesh: {
+            const Aabb box = shapeBounds(s);
+            if (box.empty()) return s.offset;
+            return box.min + Vec3(u1, u2, u3).cwiseProduct(box.extent());
+        }
     }
     return s.offset;
 }
 
+namespace {
+
+// Rejection sampling: uniform in the bounding box, kept when inside, so uniform in the volume.
+std::vector<Vec3> sampleMeshEnvelope(const Envelope& envelope, Rng& rng) {
+    std::vector<Vec3> points;
+    if (!envelope.shape.mesh) return points;
+    points.reserve(envelope.pointCount);
+    const std::uint64_t maxDraws = kMaxMeshDrawsPerPoint * envelope.pointCount;
+    for (std::uint64_t draw = 0; draw < maxDraws && points.size() < envelope.pointCount; ++draw) {
+        const double u1 = rng.uniform01();
+        const double u2 = rng.uniform01();
+        const double u3 = rng.uniform01();
+        const Vec3 p = sampleShape(envelope.shape, u1, u2, u3);
+        if (shapeContains(envelope.shape, p)) points.push_back(p);
+    }
+    return points;
+}
+
+}  // namespace
+
 std::vector<Vec3> sampleEnvelope(const Envelope& envelope, std::uint64_t baseSeed) {
     Rng rng = Rng::forStream(hashCombine(baseSeed, envelope.seed), 0);
+    if (envelope.shape.kind == ShapeKind::Mesh) return sampleMeshEnvelope(envelope, rng);
     std::vector<Vec3> points;
     points.reserve(envelope.pointCount);
     for (std::uint32_t i = 0; i < envelope.pointCount; ++i) {

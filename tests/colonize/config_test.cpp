@@ -169,7 +169,7 @@ TEST(ColonizeConfig, AMissingShapeIsAnError) {
 TEST(ColonizeConfig, AnUnknownShapeListsTheKnownOnes) {
     EXPECT_EQ(errorOf(R"({"envelopes": [{"shape": "torus", "points": 1}]})"),
               "tree.json: envelopes[0].shape: unknown shape \"torus\"; expected sphere, "
-              "ellipsoid, box, cylinder, cone, hemisphere or disc");
+              "ellipsoid, box, cylinder, cone, hemisphere, disc or mesh");
 }
 
 TEST(ColonizeConfig, AKeyAShapeDoesNotTakeIsAnError) {

@@ -41,7 +41,7 @@ std::string growGlb(const ColonizeConfig& config) {
     return encodeGlb(makeSingleMeshScene(mesh, "tree"));
 }
 
-TEST(ColonizeExamples, ThereAreSix) { EXPECT_EQ(exampleFiles().size(), 6u); }
+TEST(ColonizeExamples, ThereAreSeven) { EXPECT_EQ(exampleFiles().size(), 7u); }
 
 TEST(ColonizeExamples, EveryExampleGrowsAndStopsOnItsOwn) {
     for (const std::string& file : exampleFiles()) {
