@@ -234,6 +234,21 @@ TEST(LegPlacement, HeelThatCannotReachTheGroundStandsOnTheToes) {
     EXPECT_NEAR(result.contactGap, 0.0, 0.01 * 380.0);
 }
 
+TEST(LegPlacement, ZeroLengthLegsGiveFiniteAnglesWithinLimits) {
+    Skeleton skeleton = makeTestSkeleton(
+        300.0, {{Attachment::Hip, LimbKind::Leg, {0.0, 0.0, 0.0}, 0.0, 40.0},
+                {Attachment::Shoulder, LimbKind::Leg, {100.0, 90.0, 40.0}, 0.0, 40.0}});
+    poseLimbs(skeleton, SkeletonDesign{});
+    EXPECT_TRUE(std::isfinite(skeleton.groundHeight));
+    for (const Mat4& world : skeleton.worldTransforms()) EXPECT_TRUE(world.allFinite());
+    for (const Bone& bone : skeleton.bones) {
+        for (int d = 0; d < bone.joint.dofCount; ++d) {
+            EXPECT_LE(bone.joint.dofs[d].minDeg, bone.joint.dofs[d].angleDeg);
+            EXPECT_LE(bone.joint.dofs[d].angleDeg, bone.joint.dofs[d].maxDeg);
+        }
+    }
+}
+
 TEST(LegPlacement, IsDeterministic) {
     const std::vector<TestLimb> limbs = {
         {Attachment::Hip, LimbKind::Leg, {170.0, 90.0, 60.0}, 12.0, 40.0}};
