@@ -141,6 +141,16 @@ TEST(MeshEnvelope, ABoxMeshObstacleGrowsTheSameTreeAsTheBoxShape) {
     expectSameResult(colonize(p, points, analytic), colonize(p, points, mesh));
 }
 
+TEST(MeshEnvelope, AMeshShapeNeedsAMeshAndAPositiveScale) {
+    Shape s;
+    s.kind = ShapeKind::Mesh;
+    EXPECT_NE(validateShape(s).find("mesh is missing"), std::string::npos);
+    s = meshShape(boxMesh(Vec3(0, 0, 0), Vec3(1, 1, 1)));
+    EXPECT_EQ(validateShape(s), "");
+    s.scale = -2;
+    EXPECT_NE(validateShape(s).find("scale must be a finite number > 0"), std::string::npos);
+}
+
 // A folder with a config and mesh files, removed afterwards.
 class MeshConfigTest : public ::testing::Test {
 protected:

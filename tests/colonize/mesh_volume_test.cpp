@@ -214,6 +214,26 @@ TEST(MeshVolume, SegmentsHitTheSurfaceOrTheInsideOnly) {
     EXPECT_FALSE(cube.segmentHits(Vec3(1.5, 0.9, 0), Vec3(0.9, 1.5, 0)));
 }
 
+TEST(MeshVolume, SegmentTestsAgreeWithTheInsideTestAlongTheSegment) {
+    // A segment whose ends differ in the inside test crosses the surface; a segment that
+    // misses the volume has every point outside; one with an end inside hits.
+    const MeshVolume sphere = icosphere(2).volume();
+    Rng rng(17);
+    int hits = 0, misses = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3 a(rng.uniform(-1.3, 1.3), rng.uniform(-1.3, 1.3), rng.uniform(-1.3, 1.3));
+        const Vec3 b = a + 0.4 * Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        const bool hit = sphere.segmentHits(a, b);
+        if (sphere.contains(a) || sphere.contains(b)) ASSERT_TRUE(hit);
+        if (!hit) {
+            for (int k = 0; k <= 64; ++k) ASSERT_FALSE(sphere.contains(a + (k / 64.0) * (b - a)));
+        }
+        hits += hit, misses += !hit;
+    }
+    EXPECT_GT(hits, 500);
+    EXPECT_GT(misses, 500);
+}
+
 TEST(MeshVolume, AnObjCubeWithQuadsNegativeIndicesAndTextureReferencesReads) {
     const std::string obj =
         "# a cube\no cube\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\n"
