@@ -1,5 +1,6 @@
-// The bone grammar G″: its parameters and their constraints, the rule dictionary, and the
-// derivation on a tree whose nonterminals are leaves.
+// The bone grammar G″: its parameters and their constraints, the rule dictionary's choice by
+// weight, and the derivation on a tree whose nonterminals are leaves (the productions
+// themselves are in bone_rules.cpp).
 //
 // Based on: seed 000 §5.4 (G, its parameters and productions; "Darstellung als Baum": a
 // nonterminal is replaced by the tree B_v of a rule, whose root hangs on the nonterminal's
@@ -24,8 +25,6 @@ constexpr std::array<std::string_view, kBoneSymbolCount> kSymbolNames = {
 
 constexpr int kMaxDerivationSteps = 100000;
 
-int positive(int x) { return x > 0 ? x : 0; }
-
 [[noreturn]] void fail(const std::string& what) { throw Error("grammar parameters: " + what); }
 
 void requireFlag(int value, const char* name) {
@@ -43,168 +42,32 @@ void requireImplies(int premise, int conclusion, const char* premiseName,
     }
 }
 
-// ---- the productions of G″ (SPEC §F) -------------------------------------------------------
-
-// Skelett → Wurzelknochen (Vorderteil) Hinterteil
-BoneRuleTree skeletonRule(const GrammarParams&) {
-    BoneRuleTree t;
-    const int root = t.add(BoneSymbol::Root, -1);
-    t.add(BoneSymbol::FrontPart, root, true);
-    t.add(BoneSymbol::RearPart, root, false);
-    return t;
-}
-
-// [Wirbel (Rippe)]^count, the first hanging on `parent`; returns the last vertebra.
-int ribbedChain(BoneRuleTree& t, int count, int parent, SpineSection section) {
-    for (int i = 0; i < count; ++i) {
-        parent = t.chain(BoneSymbol::Vertebra, 1, parent, false, section);
-        t.add(BoneSymbol::Rib, parent, true);
-    }
-    return parent;
-}
-
-// G′: Vorderteil → Wirbel^{w_rv − (w_rv^r − 3)^+ − 3} [Wirbel (Rippe)]^{(w_rv^r − 3)^+}
-//                  Wirbel (Schulterpartie2) Wirbel (Rippe^{(min(1, w_rv^r − 1))^+})
-//                  Wirbel (Schulterpartie) Hals
-// With e_s2 = 0 this is G's Vorderteil: the same vertebrae, ribs on the last w_rv^r of them.
-BoneRuleTree frontPartRule(const GrammarParams& p) {
-    constexpr SpineSection kBack = SpineSection::FrontBack;
-    BoneRuleTree t;
-    const int ribbed = positive(p.frontRibs - 3);
-    int last = t.chain(BoneSymbol::Vertebra, p.frontBackVertebrae - ribbed - 3, -1, false, kBack);
-    last = ribbedChain(t, ribbed, last, kBack);
-    last = t.chain(BoneSymbol::Vertebra, 1, last, false, kBack);
-    t.add(BoneSymbol::ShoulderPart2, last, true);
-    last = t.chain(BoneSymbol::Vertebra, 1, last, false, kBack);
-    t.add(BoneSymbol::Rib, last, true, positive(std::min(1, p.frontRibs - 1)) > 0);
-    last = t.chain(BoneSymbol::Vertebra, 1, last, false, kBack);
-    t.add(BoneSymbol::ShoulderPart, last, true);
-    t.add(BoneSymbol::Neck, last, false);
-    return t;
-}
-
-// Schulterpartie → Rippe^{min(1, w_rv^r)} Schultergürtel^{e_s}, and G′'s
-// Schulterpartie2 → Rippe^{min(1, w_rv^r − 2)} Schultergürtel^{e_s2}. The girdle hangs on the
-// rib, or on the shoulder vertebra when the rib is absent.
-BoneRuleTree shoulderPartTree(int ribs, int girdle, Attachment attachment) {
-    BoneRuleTree t;
-    const int rib = t.add(BoneSymbol::Rib, -1, false, ribs > 0);
-    const int g = t.add(BoneSymbol::ShoulderGirdle, rib, false, girdle == 1);
-    t.nodes[g].fallback = true;
-    t.nodes[g].attachment = attachment;
-    return t;
-}
-
-BoneRuleTree shoulderPartRule(const GrammarParams& p) {
-    return shoulderPartTree(std::min(1, p.frontRibs), p.shoulder, Attachment::Shoulder);
-}
-
-BoneRuleTree shoulderPart2Rule(const GrammarParams& p) {
-    return shoulderPartTree(std::min(1, p.frontRibs - 2), p.shoulder2, Attachment::Shoulder2);
-}
-
-// Schultergürtel → Schulterblatt Vorderextremität
-BoneRuleTree shoulderGirdleRule(const GrammarParams&) {
-    BoneRuleTree t;
-    t.add(BoneSymbol::FrontLimb, t.add(BoneSymbol::Scapula, -1));
-    return t;
-}
-
-// Vorderextremität → Oberarm Unterarm Hand
-BoneRuleTree frontLimbRule(const GrammarParams&) {
-    BoneRuleTree t;
-    t.add(BoneSymbol::Hand, t.add(BoneSymbol::Forearm, t.add(BoneSymbol::UpperArm, -1)));
-    return t;
-}
-
-// G″: Hals → Wirbel^{w_h − 5} Wirbel (Schultergürtel^{e_h2}) Wirbel Wirbel (Schultergürtel^{e_h})
-//            Wirbel² Schädel
-// written as Wirbel^{w_h − 5h} [Wirbel (SG^{e_h2}) Wirbel Wirbel (SG^{e_h}) Wirbel²]^h Schädel:
-// without a neck (h = 0, w_h = 0) it is G's Hals → Schädel, as "G″ behaves like G′ when
-// e_h = e_h2 = 0" requires (the literal rule would make 5 vertebrae out of none).
-BoneRuleTree neckRule(const GrammarParams& p) {
-    constexpr SpineSection kNeck = SpineSection::Neck;
-    BoneRuleTree t;
-    int last = t.chain(BoneSymbol::Vertebra, p.neckVertebrae - 5 * p.neck, -1, false, kNeck);
-    if (p.neck == 1) {
-        last = t.chain(BoneSymbol::Vertebra, 1, last, false, kNeck);
-        const int second = t.add(BoneSymbol::ShoulderGirdle, last, true, p.neckShoulder2 == 1);
-        t.nodes[second].attachment = Attachment::Neck2;
-        last = t.chain(BoneSymbol::Vertebra, 2, last, false, kNeck);
-        const int first = t.add(BoneSymbol::ShoulderGirdle, last, true, p.neckShoulder == 1);
-        t.nodes[first].attachment = Attachment::Neck;
-        last = t.chain(BoneSymbol::Vertebra, 2, last, false, kNeck);
-    }
-    t.add(BoneSymbol::Skull, last);
-    return t;
-}
-
-// Hinterteil → [Wirbel (Rippe)]^{w_rh^r} Wirbel^{w_rh − w_rh^r} (Beckengürtel) Wirbel^{w_s}
-BoneRuleTree rearPartRule(const GrammarParams& p) {
-    BoneRuleTree t;
-    int last = ribbedChain(t, p.rearRibs, -1, SpineSection::RearBack);
-    last = t.chain(BoneSymbol::Vertebra, p.rearBackVertebrae - p.rearRibs, last, false,
-                   SpineSection::RearBack);
-    const int girdle = t.add(BoneSymbol::PelvicGirdle, last, true);
-    t.nodes[girdle].attachment = Attachment::Hip;
-    t.chain(BoneSymbol::Vertebra, p.tailVertebrae, last, false, SpineSection::Tail);
-    return t;
-}
-
-// G′: Beckengürtel → [Beckenknochen Hinterextremität]^{e_b − e_b2}
-//                    [Beckenknochen2 (Hinterextremität) Hinterextremität]^{e_b2}
-// The bracketed limb of the double pelvis is the second pair (Hip2).
-BoneRuleTree pelvicGirdleRule(const GrammarParams& p) {
-    BoneRuleTree t;
-    const int single = t.add(BoneSymbol::Pelvis, -1, false, p.hip - p.hip2 > 0);
-    t.add(BoneSymbol::HindLimb, single);
-    const int twin = t.add(BoneSymbol::Pelvis2, -1, false, p.hip2 == 1);
-    const int second = t.add(BoneSymbol::HindLimb, twin, true);
-    t.nodes[second].attachment = Attachment::Hip2;
-    t.add(BoneSymbol::HindLimb, twin, false);
-    return t;
-}
-
-// Hinterextremität → Oberschenkel Unterschenkel Fuß
-BoneRuleTree hindLimbRule(const GrammarParams&) {
-    BoneRuleTree t;
-    t.add(BoneSymbol::Foot, t.add(BoneSymbol::Shank, t.add(BoneSymbol::Thigh, -1)));
-    return t;
-}
-
-BoneRuleDictionary makeDefaultRules() {
-    BoneRuleDictionary d;
-    d[BoneSymbol::Skeleton].push_back({skeletonRule});
-    d[BoneSymbol::FrontPart].push_back({frontPartRule});
-    d[BoneSymbol::RearPart].push_back({rearPartRule});
-    d[BoneSymbol::ShoulderPart].push_back({shoulderPartRule});
-    d[BoneSymbol::ShoulderPart2].push_back({shoulderPart2Rule});
-    d[BoneSymbol::ShoulderGirdle].push_back({shoulderGirdleRule});
-    d[BoneSymbol::PelvicGirdle].push_back({pelvicGirdleRule});
-    d[BoneSymbol::Neck].push_back({neckRule});
-    d[BoneSymbol::FrontLimb].push_back({frontLimbRule});
-    d[BoneSymbol::HindLimb].push_back({hindLimbRule});
-    return d;
-}
-
 // ---- derivation ------------------------------------------------------------------------------
 
 using Node = BoneSymbolTree::Node;
 
-// The first nonterminal in word order (pre-order, children in list order); −1 when none.
-int firstNonterminal(const BoneSymbolTree& tree) {
+// Reusable buffers of a derivation (no allocations per step once they have grown).
+struct Scratch {
+    std::vector<int> mapped;    // rule node → tree node, −1 when not inserted
+    std::vector<int> topLevel;  // inserted nodes hanging on the replaced node's parent
     std::vector<int> stack;
-    if (tree.root >= 0) stack.push_back(tree.root);
+    std::vector<int> found;
+};
+
+// Appends the nonterminals of the subtrees rooted at `roots` (siblings, in order) to `out`,
+// in word order (pre-order, children in list order).
+void collectNonterminals(const BoneSymbolTree& tree, const std::vector<int>& roots,
+                         std::vector<int>& stack, std::vector<int>& out) {
+    stack.assign(roots.rbegin(), roots.rend());
     while (!stack.empty()) {
         const int n = stack.back();
         stack.pop_back();
-        if (!isTerminal(tree.nodes[n].symbol)) return n;
+        if (!isTerminal(tree.nodes[n].symbol)) out.push_back(n);
         const std::size_t mark = stack.size();
         for (int c = tree.nodes[n].firstChild; c >= 0; c = tree.nodes[c].nextSibling)
             stack.push_back(c);
         std::reverse(stack.begin() + static_cast<std::ptrdiff_t>(mark), stack.end());
     }
-    return -1;
 }
 
 const BoneRule& pickRule(const BoneRuleDictionary& rules, BoneSymbol symbol, Rng& rng) {
@@ -284,17 +147,20 @@ std::optional<Placement> resolveParent(const BoneRuleTree& rule, const std::vect
     return place;
 }
 
-// Replaces the nonterminal leaf `n` by the rule tree (seed 000 §5.4).
-void replaceNode(BoneSymbolTree& tree, int n, const BoneRuleTree& rule) {
+// Replaces the nonterminal leaf `n` by the rule tree (seed 000 §5.4); the inserted nodes that
+// hang on n's parent are left in scratch.topLevel.
+void replaceNode(BoneSymbolTree& tree, int n, const BoneRuleTree& rule, Scratch& scratch) {
     const Node replaced = tree.nodes[n];
     int after = unlink(tree, n);
     tree.nodes[n].alive = false;
-    std::vector<int> mapped(rule.nodes.size(), -1);
+    scratch.mapped.assign(rule.nodes.size(), -1);
+    scratch.topLevel.clear();
     for (std::size_t r = 0; r < rule.nodes.size(); ++r) {
         const BoneRuleNode& node = rule.nodes[r];
         RAMUS_ASSERT(node.parent < static_cast<int>(r));
         if (!node.present) continue;
-        const auto place = resolveParent(rule, mapped, static_cast<int>(r), replaced.branch);
+        const auto place =
+            resolveParent(rule, scratch.mapped, static_cast<int>(r), replaced.branch);
         if (!place) continue;
         if (place->ruleParent >= 0 && !isTerminal(rule.nodes[place->ruleParent].symbol)) {
             throw Error("bone grammar: a rule gives the nonterminal " +
@@ -308,15 +174,21 @@ void replaceNode(BoneSymbolTree& tree, int n, const BoneRuleTree& rule) {
         added.attachment = node.attachment ? node.attachment : replaced.attachment;
         const int index = static_cast<int>(tree.nodes.size());
         tree.nodes.push_back(added);
-        mapped[r] = index;
+        scratch.mapped[r] = index;
         if (place->ruleParent < 0) {
             linkAfter(tree, replaced.parent, after, index);
             after = index;
+            scratch.topLevel.push_back(index);
         } else {
-            const int parent = mapped[place->ruleParent];
+            const int parent = scratch.mapped[place->ruleParent];
             linkAfter(tree, parent, tree.nodes[parent].lastChild, index);
         }
     }
+}
+
+void expand(BoneSymbolTree& tree, int n, const BoneRuleDictionary& rules,
+            const GrammarParams& params, Rng& rng, Scratch& scratch) {
+    replaceNode(tree, n, pickRule(rules, tree.nodes[n].symbol, rng)(params), scratch);
 }
 
 void writeWord(const BoneSymbolTree& tree, int n, std::string& out) {
@@ -436,6 +308,7 @@ GrammarParams grammarParams(const SkeletonDesign& design, const Spine& spine) {
 }
 
 int BoneRuleTree::add(BoneSymbol symbol, int parent, bool branch, bool present) {
+    if (nodes.empty()) nodes.reserve(32);
     BoneRuleNode node;
     node.symbol = symbol;
     node.parent = parent;
@@ -464,11 +337,6 @@ const std::vector<WeightedBoneRule>& BoneRuleDictionary::operator[](BoneSymbol n
     return rules[static_cast<std::size_t>(static_cast<int>(nonterminal) - kFirstNonterminal)];
 }
 
-const BoneRuleDictionary& defaultBoneRules() {
-    static const BoneRuleDictionary rules = makeDefaultRules();
-    return rules;
-}
-
 BoneSymbolTree BoneSymbolTree::start() {
     BoneSymbolTree tree;
     tree.nodes.push_back(Node{});
@@ -478,10 +346,10 @@ BoneSymbolTree BoneSymbolTree::start() {
 
 bool deriveBoneStep(BoneSymbolTree& tree, const BoneRuleDictionary& rules,
                     const GrammarParams& params, Rng& rng) {
-    const int n = firstNonterminal(tree);
-    if (n < 0) return false;
-    const BoneRuleTree rule = pickRule(rules, tree.nodes[n].symbol, rng)(params);
-    replaceNode(tree, n, rule);
+    Scratch scratch;
+    if (tree.root >= 0) collectNonterminals(tree, {tree.root}, scratch.stack, scratch.found);
+    if (scratch.found.empty()) return false;
+    expand(tree, scratch.found.front(), rules, params, rng, scratch);
     return true;
 }
 
@@ -489,12 +357,23 @@ BoneSymbolTree deriveBoneTree(const GrammarParams& params, const BoneRuleDiction
                               Rng& rng) {
     checkGrammarParams(params);
     BoneSymbolTree tree = BoneSymbolTree::start();
+    tree.nodes.reserve(256);
+    Scratch scratch;
+    // The pending nonterminals in word order, reversed: the top is the leftmost. Replacing it
+    // puts its rule's nonterminals where it stood, before all the others.
+    std::vector<int> pending{tree.root};
     int steps = 0;
-    while (deriveBoneStep(tree, rules, params, rng)) {
+    while (!pending.empty()) {
         if (++steps > kMaxDerivationSteps) {
             throw Error("bone grammar: the derivation did not end after " +
                         std::to_string(kMaxDerivationSteps) + " steps (recursive rules?)");
         }
+        const int n = pending.back();
+        pending.pop_back();
+        expand(tree, n, rules, params, rng, scratch);
+        scratch.found.clear();
+        collectNonterminals(tree, scratch.topLevel, scratch.stack, scratch.found);
+        pending.insert(pending.end(), scratch.found.rbegin(), scratch.found.rend());
     }
     return compacted(tree);
 }

@@ -16,7 +16,8 @@
 //   the animals stand on (seed 000 §7.4.1); ribs are D long (the thesis: up to 100 px) times a
 //   taper from 1 at the shoulder to 0.5 at the hip, hang from the middle of their vertebra
 //   tilted 25° outwards from straight down, 0.5 T thick;
-// - skull 1.2 D(shoulder) long, pointing halfway between the neck's direction and forward;
+// - skull 1.2 D(shoulder) long, 0.5 of that high, 0.45 wide, pointing along (neck's end
+//   direction + 2 × forward-20°-down), normalized;
 // - scapula 0.5 × upper arm, pelvis 0.5 × thigh, each clamped to [T, 0.3 B], on the distal
 //   end of their vertebra, 0.35 D (≥ T) to the side (1.5 T on the neck); the scapula points
 //   down and 20° forward, the pelvis down and 30° back; the double pelvis holds its two hip
@@ -36,6 +37,7 @@ constexpr double kMinLimbBoneLength = 1.0;
 constexpr double kRibTiltDeg = 25.0;
 constexpr double kScapulaAngleDeg = -110.0;  // x axis: down, 20° towards the head (−x)
 constexpr double kPelvisAngleDeg = -60.0;    // x axis: down, 30° towards the tail (+x)
+constexpr double kSkullDownDeg = 20.0;
 constexpr std::uint64_t kGrammarStream = 0x6772616d6d6172ULL;
 
 struct Proportions {
@@ -287,10 +289,14 @@ Mat4 Placer::ribFrame(int n) {
 Mat4 Placer::skullFrame(int n) {
     const int parent = tree_.nodes[n].parent;
     const Vec3 origin = parent >= 0 ? distalEnd(parent) : lifted(spine_.points[0]);
-    Vec3 direction = -Vec3::UnitX();
+    // Mostly forward and a little down, as skulls sit on a neck, turned a third of the way
+    // towards the neck's own direction.
+    const double down = degToRad(kSkullDownDeg);
+    const Vec3 forward(-std::cos(down), -std::sin(down), 0.0);
+    Vec3 direction = forward;
     if (parent >= 0) {
-        const Vec3 halfway = xAxis(parent).normalized() - Vec3::UnitX();
-        if (halfway.norm() > 0.1) direction = halfway.normalized();
+        const Vec3 mixed = xAxis(parent).normalized() + 2.0 * forward;
+        if (mixed.norm() > 0.1) direction = mixed.normalized();
     }
     const double length = 1.2 * prop_.depth(spine_.points[3].y());
     skeleton_.bones[n].extents = Vec3(length, 0.5 * length, 0.45 * length);

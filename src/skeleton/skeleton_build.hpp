@@ -32,7 +32,7 @@ enum class SpinePart { Neck = 0, Back = 1, Tail = 2 };
 Spine makeSpine(const SkeletonFeatures& features);
 /// Point of one spine Bézier at parameter t ∈ [0, 1].
 Vec2 spinePoint(const Spine& spine, SpinePart part, double t);
-/// Arc length of one spine Bézier between parameters t0 ≤ t1 (adaptive Gauss–Legendre,
+/// Arc length of one spine Bézier between parameters t0 ≤ t1 (adaptive Gauss–Kronrod,
 /// relative error ≤ ~1e-10). t0 > t1 gives the negative length.
 double spineLength(const Spine& spine, SpinePart part, double t0 = 0.0, double t1 = 1.0);
 

@@ -125,6 +125,38 @@ TEST(BonePlacement, EverySpeciesWithEveryAttachmentSatisfiesTheInvariants) {
     }
 }
 
+TEST(BonePlacement, RandomDesignsFromThePcaSatisfyTheInvariants) {
+    // Sampled feature points have odd spines (short or missing parts, points below the ground,
+    // negative limb lengths); counts from the thesis's ranges (§5.3), limbs at random.
+    Rng rng(2024);
+    for (int i = 0; i < 300; ++i) {
+        SkeletonDesign d;
+        d.featurePoint = thesisModel().sample(rng);
+        d.neckVertebrae = 7 + static_cast<int>(rng.uniformInt(24));
+        d.frontBackVertebrae = 3 + static_cast<int>(rng.uniformInt(12));
+        d.rearBackVertebrae = 1 + static_cast<int>(rng.uniformInt(12));
+        d.tailVertebrae = 5 + static_cast<int>(rng.uniformInt(16));
+        d.ribs = static_cast<int>(rng.uniformInt(
+            static_cast<std::uint32_t>(d.frontBackVertebrae + d.rearBackVertebrae + 1)));
+        d.spacing = rng.uniform01() < 0.5 ? SpineSpacing::ArcLength : SpineSpacing::Parameter;
+        d.grammarSeed = rng.nextU32();
+        const bool neck = makeSpine(d.features()).hasNeck;
+        using A = Attachment;
+        for (auto [first, second] :
+             {std::pair{A::Hip, A::Hip2}, std::pair{A::Shoulder, A::Shoulder2},
+              std::pair{A::Neck, A::Neck2}}) {
+            if (first == A::Neck && !neck) continue;
+            for (A at : {first, second}) {
+                const auto kind = static_cast<LimbKind>(rng.uniformInt(5));
+                if (attachmentAccepts(at, kind)) d.limbs[static_cast<int>(at)] = kind;
+            }
+            if (d.limb(first) == LimbKind::None) d.limbs[static_cast<int>(second)] = LimbKind::None;
+        }
+        checkInvariants(place(d), "sample " + std::to_string(i));
+        if (HasFailure()) break;
+    }
+}
+
 TEST(BonePlacement, VertebraeChainContinuouslyFromTheRootToHeadAndTail) {
     const Placed p = place(designOf("Giraffe"));
     const auto& bones = p.skeleton.bones;
