@@ -134,6 +134,20 @@ Json parseExtras(const std::string& text, const std::string& where) {
     return extras;
 }
 
+// An upper bound of the BIN chunk's size (every attribute at full width, 3 bytes of alignment
+// padding per buffer view), so the chunk is allocated once.
+std::size_t binBytesBound(const Scene& scene) {
+    std::size_t bytes = 0;
+    for (const Mesh& m : scene.meshes) {
+        bytes += m.positions.size() * sizeof(Vec3f) + m.normals.size() * sizeof(Vec3f) +
+                 m.tangents.size() * sizeof(Vec4f) + m.uvs.size() * sizeof(Vec2f) +
+                 m.joints.size() * sizeof(m.joints[0]) + m.weights.size() * sizeof(Vec4f) +
+                 m.indices.size() * sizeof(std::uint32_t) + 7 * 3;
+    }
+    for (const Skin& skin : scene.skins) bytes += skin.inverseBindMatrices.size() * 64 + 3;
+    return bytes + 3;
+}
+
 // Collects the JSON document and the binary chunk of one GLB.
 class GlbBuilder {
 public:
@@ -374,6 +388,7 @@ Json GlbBuilder::sceneJson() const {
 
 std::string GlbBuilder::encode() {
     io::checkScene(scene_, context_);
+    bin_.reserve(binBytesBound(scene_));
     std::vector<int> meshIndex;
     for (const Mesh& mesh : scene_.meshes) meshIndex.push_back(addMesh(mesh));
     addNodes(meshIndex);
@@ -386,12 +401,12 @@ std::string GlbBuilder::encode() {
                      {"version", "2.0"}};
     root["scene"] = 0;
     root["scenes"] = Json::array({sceneJson()});
-    if (!nodes_.empty()) root["nodes"] = nodes_;
-    if (!meshes_.empty()) root["meshes"] = meshes_;
-    if (!skins_.empty()) root["skins"] = skins_;
-    if (!materials_.empty()) root["materials"] = materials_;
-    if (!accessors_.empty()) root["accessors"] = accessors_;
-    if (!bufferViews_.empty()) root["bufferViews"] = bufferViews_;
+    if (!nodes_.empty()) root["nodes"] = std::move(nodes_);
+    if (!meshes_.empty()) root["meshes"] = std::move(meshes_);
+    if (!skins_.empty()) root["skins"] = std::move(skins_);
+    if (!materials_.empty()) root["materials"] = std::move(materials_);
+    if (!accessors_.empty()) root["accessors"] = std::move(accessors_);
+    if (!bufferViews_.empty()) root["bufferViews"] = std::move(bufferViews_);
     if (!bin_.empty()) root["buffers"] = Json::array({Json{{"byteLength", bin_.size()}}});
 
     std::string json = root.dump();

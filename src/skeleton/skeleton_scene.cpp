@@ -95,6 +95,15 @@ void appendField(std::string& out, const char* key, std::string_view value) {
     out += "\",";
 }
 
+// A unit quaternion of `rotation` with w ≥ 0 (q and −q are the same rotation; one sign keeps
+// the files tidy).
+Eigen::Quaterniond canonicalQuaternion(const Mat3& rotation) {
+    Eigen::Quaterniond q(rotation);
+    q.normalize();
+    if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+    return q;
+}
+
 // The node's local rotation with all joint angles 0 (see skeletonToScene).
 Mat3 restLocalRotation(const Bone& bone) {
     const Mat3 rotation = kBoneFromNode.transpose() * bone.joint.rest * kBoneFromNode;
@@ -102,7 +111,7 @@ Mat3 restLocalRotation(const Bone& bone) {
 }
 
 void appendJoint(std::string& out, const Bone& bone) {
-    const Eigen::Quaterniond rest(restLocalRotation(bone));
+    const Eigen::Quaterniond rest = canonicalQuaternion(restLocalRotation(bone));
     const double q[4] = {rest.x(), rest.y(), rest.z(), rest.w()};
     out += "\"joint\":{\"rest_rotation\":";
     appendVector(out, q, 4);
@@ -170,12 +179,12 @@ void addJointNodes(const Skeleton& skeleton, Scene& scene) {
         node.parent = bone.parent;
         if (bone.parent < 0) {
             const Mat3 rotation = kInternalToGltf * joint.topLeftCorner<3, 3>() * kBoneFromNode;
-            node.rotation = Eigen::Quaterniond(rotation).normalized();
+            node.rotation = canonicalQuaternion(rotation);
             node.translation = (toGltf * joint.col(3)).head<3>();
         } else {
             const Mat3 rotation =
                 kBoneFromNode.transpose() * joint.topLeftCorner<3, 3>() * kBoneFromNode;
-            node.rotation = Eigen::Quaterniond(rotation).normalized();
+            node.rotation = canonicalQuaternion(rotation);
             node.translation = s * (kBoneFromNode.transpose() * bone.joint.position);
         }
         node.extrasJson = boneExtras(bone, s);
