@@ -79,7 +79,8 @@ Mat3 boneFromNode();
 ///   primitive per bone kind; each vertex has joints (bone, 0, 0, 0) and weights (1, 0, 0, 0).
 /// - extras: "ground_height_px", "metres_per_pixel", "heel_contact".
 /// An empty skeleton (no bones) gives an empty scene. Precondition: bones[0] is the root and
-/// parents come before children (Skeleton's invariants), joint rotations are orthonormal.
+/// parents come before children (Skeleton's invariants), joint rotations are orthonormal, at
+/// most 65536 bones (16-bit joint indices).
 Scene skeletonToScene(const Skeleton& skeleton, const SkeletonSceneParams& params = {});
 
 }  // namespace ramus

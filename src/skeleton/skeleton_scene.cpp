@@ -7,6 +7,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "ramus/error.hpp"
+
 namespace ramus {
 
 namespace {
@@ -330,6 +332,7 @@ Mat3 boneFromNode() { return kBoneFromNode; }
 Scene skeletonToScene(const Skeleton& skeleton, const SkeletonSceneParams& params) {
     Scene scene;
     if (skeleton.bones.empty()) return scene;
+    RAMUS_ASSERT(skeleton.bones.size() <= 65536);  // joint indices are 16-bit
     addJointNodes(skeleton, scene);
     SkeletonMeshBuilder builder(skeleton);
     for (std::size_t i = 0; i < skeleton.bones.size(); ++i) {
