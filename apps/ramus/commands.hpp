@@ -11,5 +11,6 @@ void addRenderCommand(CLI::App& app);
 void addSpeciesCommand(CLI::App& app);
 void addPcaCommand(CLI::App& app);
 void addColonizeCommand(CLI::App& app);
+void addSkeletonCommand(CLI::App& app);
 
 }  // namespace ramus::cli

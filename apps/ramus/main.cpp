@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     ramus::cli::addSpeciesCommand(app);
     ramus::cli::addPcaCommand(app);
     ramus::cli::addColonizeCommand(app);
+    ramus::cli::addSkeletonCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -182,6 +182,55 @@ std::vector<LegReach> legReaches(const Skeleton& skeleton, const std::vector<Lim
     return legs;
 }
 
+/// The highest ground every leg can stand on folded: a leg folds at most to its longest bone
+/// plus its thickness below the joint. A long leg on a high girdle next to a short one on a low
+/// girdle otherwise gets a ground it cannot fold under.
+double highestGroundForFolding(const Skeleton& skeleton, const std::vector<LimbChain>& chains,
+                               const std::vector<LegReach>& legs) {
+    double highest = std::numeric_limits<double>::infinity();
+    std::size_t legIndex = 0;
+    for (const LimbChain& chain : chains) {
+        if (chain.kind != LimbKind::Leg) continue;
+        double longest = 0.0, thickest = 0.0;
+        for (int b : chain.bones) {
+            const Vec3& e = skeleton.bones[static_cast<std::size_t>(b)].extents;
+            longest = std::max(longest, e.x());
+            thickest = std::max(thickest, std::max(e.y(), e.z()));
+        }
+        highest = std::min(highest, legs[legIndex++].jointHeight - longest - thickest);
+    }
+    return highest;
+}
+
+/// The ground rule of §5.5.1 can put the body below the ground when the legs are short (§7.5):
+/// ribs are shortened to stay above it; if the body still reaches lower, the ground moves down
+/// to the body's lowest point and legs that cannot reach it with 0.8 of their length are
+/// lengthened until they can (body_ground.cpp). The heel probability then follows the formula
+/// for a ground that was not raised.
+GroundHeight groundUnderBody(Skeleton& skeleton, const std::vector<LimbChain>& chains,
+                             std::vector<LegReach> legs, const GroundHeight& legGround) {
+    fitRibsAboveGround(skeleton, skeleton.worldTransforms(), legGround.height);
+    const double body = std::min(lowestBodyPoint(skeleton, skeleton.worldTransforms(), chains),
+                                 highestGroundForFolding(skeleton, chains, legs));
+    if (body >= legGround.height) return legGround;
+    std::size_t legIndex = 0;
+    for (const LimbChain& chain : chains) {
+        if (chain.kind != LimbKind::Leg) continue;
+        LegReach& leg = legs[legIndex++];
+        leg.jointHeight -= body;
+        const double needed = leg.jointHeight / kGroundLegFraction;
+        if (leg.length > 0.0 && needed > leg.length) {
+            const double factor = needed / leg.length;
+            lengthenLeg(skeleton, chain, factor);
+            leg.length *= factor;
+            leg.footLength *= factor;
+        }
+    }
+    GroundHeight ground = computeGroundHeight(legs, 0.0);
+    ground.height += body;
+    return ground;
+}
+
 }  // namespace
 
 void poseLimbs(Skeleton& skeleton, const SkeletonDesign& design) {
@@ -213,7 +262,8 @@ void poseLimbs(Skeleton& skeleton, const SkeletonDesign& design) {
         lowest = lowestBonePoint(skeleton.bones, world);
         if (!std::isfinite(lowest)) lowest = 0.0;
     }
-    const GroundHeight ground = computeGroundHeight(legs, lowest);
+    GroundHeight ground = computeGroundHeight(legs, lowest);
+    if (!legs.empty()) ground = groundUnderBody(skeleton, chains, legs, ground);
     skeleton.groundHeight = ground.height;
     skeleton.heelProbability = ground.heelProbability;
     skeleton.heelContact = !legs.empty() && design.heelDraw < ground.heelProbability;

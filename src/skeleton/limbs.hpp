@@ -123,3 +123,24 @@ LegPlacementResult placeLeg(Skeleton& skeleton, const LimbChain& chain, const Ma
                             const LegPlacementParams& params = {});
 
 }  // namespace ramus::detail
+
+// ---- the body against the ground (body_ground.cpp) -------------------------------------------
+
+namespace ramus::detail {
+
+/// Shortens every Left rib whose box would dip below `groundHeight` so that its lowest corner
+/// rests on it (rib lengths are a free choice of the placement, seed 000 §5.4; the ground is
+/// not). A rib whose root already lies below keeps a length of 1 px. `world` are the current
+/// world transforms (ribs are leaves, so they stay valid).
+void fitRibsAboveGround(Skeleton& skeleton, std::span<const Mat4> world, double groundHeight);
+
+/// Lowest world y over all bones except the limb bones of legs (girdles count as body).
+/// +infinity when there are none.
+double lowestBodyPoint(const Skeleton& skeleton, std::span<const Mat4> world,
+                       std::span<const LimbChain> chains);
+
+/// Scales the three bones of a leg chain along their length (extents.x and the joint positions
+/// that sit at a parent's distal end) by `factor` ≥ 1.
+void lengthenLeg(Skeleton& skeleton, const LimbChain& chain, double factor);
+
+}  // namespace ramus::detail

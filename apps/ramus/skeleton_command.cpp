@@ -1,0 +1,185 @@
+// `ramus skeleton …`: generate vertebrate skeletons from the statistics and the bone grammar,
+// write NAME<i>.glb, .obj, .json (and .png) per skeleton (docs/skeleton.md).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "ramus/error.hpp"
+#include "ramus/export.hpp"
+#include "ramus/render.hpp"
+#include "ramus/skeleton.hpp"
+#include "ramus/skeleton_io.hpp"
+#include "ramus/skeleton_scene.hpp"
+
+namespace ramus::cli {
+
+namespace {
+
+struct SkeletonOptions {
+    // Values are kept as 0-or-1-element vectors so "absent" differs from 0 (seed 000 §6.1).
+    std::vector<int> legs, wings, arms, fins;
+    std::vector<double> neckY, tailX, height, length;
+    bool twoPerGirdle = false;
+    std::string neckShoulder = "allowed";
+    std::string head;
+    std::string example;
+    std::string load;
+    std::string species;
+    bool variations = false;
+    int count = 1;
+    std::string name = "skeleton";
+    std::string resolution = "box";
+    std::vector<std::uint64_t> seed;
+    std::string spacing = "arc_length";
+    std::string spread = "model";
+    bool png = false;
+    std::string view = "side";
+    std::string size = "800x800";
+    std::string outputDirectory;
+};
+
+template <typename T>
+std::optional<T> optionalOf(const std::vector<T>& values) {
+    if (values.empty()) return std::nullopt;
+    return values.front();
+}
+
+SkeletonInputs inputsFrom(const SkeletonOptions& o) {
+    SkeletonInputs inputs;
+    inputs.legs = optionalOf(o.legs);
+    inputs.wings = optionalOf(o.wings);
+    inputs.arms = optionalOf(o.arms);
+    inputs.fins = optionalOf(o.fins);
+    inputs.neckYLength = optionalOf(o.neckY);
+    inputs.tailXLength = optionalOf(o.tailX);
+    inputs.heightMetres = optionalOf(o.height);
+    inputs.lengthMetres = optionalOf(o.length);
+    inputs.twoPerGirdle = o.twoPerGirdle;
+    inputs.neckShoulder = *parseNeckShoulder(o.neckShoulder);
+    inputs.headKind = o.head;
+    if (!o.example.empty()) inputs.example = o.example;
+    inputs.spacing = *parseSpineSpacing(o.spacing);
+    inputs.spread = o.spread == "thesis" ? SampleSpread::Thesis : SampleSpread::Model;
+    return inputs;
+}
+
+/// One skeleton's files: NAME<i>.glb, .obj, .json and optionally .png in the output directory.
+void writeSkeletonFiles(const SkeletonOptions& o, const SkeletonDesign& design,
+                        const std::string& name, std::uint64_t seed) {
+    const Skeleton skeleton = buildSkeleton(design);
+    const Scene scene = skeletonToScene(skeleton, SkeletonSceneParams{});
+    const std::filesystem::path base = std::filesystem::path(o.outputDirectory) / name;
+    writeGlb(scene, base.string() + ".glb");
+    writeObj(scene, base.string() + ".obj");
+    writeSkeletonMetadata(base.string() + ".json", design, skeleton, name, seed);
+    if (o.png) {
+        const ImageSize size = parseImageSize(o.size);
+        RenderParams params;
+        params.width = size.width;
+        params.height = size.height;
+        params.view = parseView(o.view);
+        writePng(renderScene(scene, params), base.string() + ".png");
+    }
+}
+
+void printProgress(int done, int total) {
+    if (total < 2) return;
+    constexpr int kWidth = 30;
+    const int filled = done * kWidth / total;
+    std::fprintf(stderr, "\r[%s%s] %d/%d", std::string(filled, '#').c_str(),
+                 std::string(kWidth - filled, '.').c_str(), done, total);
+    if (done == total) std::fprintf(stderr, "\n");
+}
+
+void checkOptions(const SkeletonOptions& o) {
+    if (o.count < 1) throw Error("--count: expected at least 1, got " + std::to_string(o.count));
+    if (o.variations && o.load.empty() && o.example.empty()) {
+        throw Error("--variations: needs a skeleton to vary; give --load FILE.json or --example");
+    }
+    if (!o.load.empty() && !o.variations && o.count != 1) {
+        throw Error("--load without --variations regenerates the one saved skeleton; --count " +
+                    std::to_string(o.count) + " needs --variations");
+    }
+    if (!o.load.empty() && !o.example.empty()) {
+        throw Error("--load and --example: expected at most one source skeleton, got both");
+    }
+}
+
+void run(const SkeletonOptions& o) {
+    checkOptions(o);
+    const SkeletonInputs inputs = inputsFrom(o);
+    const SkeletonStats stats =
+        o.species.empty() ? SkeletonStats::builtin() : SkeletonStats::load(o.species);
+    std::filesystem::create_directories(o.outputDirectory);
+
+    std::optional<LoadedSkeleton> loaded;
+    if (!o.load.empty()) loaded = readSkeletonMetadata(o.load);
+    if (loaded && !o.variations) {
+        const std::string name = o.name == "skeleton" ? loaded->name : o.name;
+        writeSkeletonFiles(o, loaded->design, name, loaded->seed);
+        return;
+    }
+    const std::uint64_t seed = o.seed.empty() ? (loaded ? loaded->seed : 1) : o.seed.front();
+    std::optional<SkeletonDesign> source;
+    if (loaded) source = loaded->design;
+    if (!source && o.variations) {
+        Rng rng = Rng::forStream(seed, ~std::uint64_t{0});
+        source = designSkeleton(stats, inputs, rng);
+    }
+    for (int i = 0; i < o.count; ++i) {
+        Rng rng = Rng::forStream(seed, static_cast<std::uint64_t>(i));
+        const SkeletonDesign design = source ? varySkeletonDesign(stats, *source, inputs, rng)
+                                             : designSkeleton(stats, inputs, rng);
+        writeSkeletonFiles(o, design, o.name + std::to_string(i), seed);
+        printProgress(i + 1, o.count);
+    }
+}
+
+void addInputOptions(CLI::App& cmd, SkeletonOptions& o) {
+    cmd.add_option("--legs", o.legs, "legs with ground contact (even, 0-8)")->expected(1);
+    cmd.add_option("--wings", o.wings, "wings (even)")->expected(1);
+    cmd.add_option("--arms", o.arms, "arms (even)")->expected(1);
+    cmd.add_option("--fins", o.fins, "fins (even)")->expected(1);
+    cmd.add_option("--neck-y", o.neckY, "neck y length in px of the 1000 px frame")->expected(1);
+    cmd.add_option("--tail-x", o.tailX, "tail x length in px of the 1000 px frame")->expected(1);
+    cmd.add_flag("--two-per-girdle", o.twoPerGirdle, "allow two limb pairs per girdle (G')");
+    cmd.add_option("--neck-shoulder", o.neckShoulder, "second shoulder girdle on the neck (G'')")
+        ->check(CLI::IsMember({"allowed", "forced", "forbidden"}));
+    cmd.add_option("--head", o.head, "skull kind of the bone library");
+    cmd.add_option("--example", o.example, "construct from this species (English or German)");
+    cmd.add_option("--height", o.height, "scale to this standing height in metres")->expected(1);
+    cmd.add_option("--length", o.length, "scale to this body length in metres")->expected(1);
+    cmd.add_option("--spacing", o.spacing, "vertebra spacing along the spine curves")
+        ->check(CLI::IsMember({"arc_length", "parameter"}));
+    cmd.add_option(
+           "--spread", o.spread,
+           "PCA sampling: model = N(0, lambda), thesis = lambda*N(0, 1) (closer to the mean)")
+        ->check(CLI::IsMember({"model", "thesis"}));
+    cmd.add_option("--species", o.species, "species data file instead of the built-in 44");
+}
+
+}  // namespace
+
+void addSkeletonCommand(CLI::App& app) {
+    auto o = std::make_shared<SkeletonOptions>();
+    CLI::App* cmd = app.add_subcommand("skeleton", "generate vertebrate skeletons");
+    addInputOptions(*cmd, *o);
+    cmd->add_option("--load", o->load, "regenerate (or vary) a saved skeleton (.json)");
+    cmd->add_flag("--variations", o->variations, "make variations of --load or --example");
+    cmd->add_option("--count", o->count, "number of skeletons");
+    cmd->add_option("--name", o->name, "file name stem; files are NAME<i>.glb/.obj/.json");
+    cmd->add_option("--resolution", o->resolution, "bone meshes: box")
+        ->check(CLI::IsMember({"box"}));
+    cmd->add_option("--seed", o->seed, "seed (non-negative integer)")->expected(1);
+    cmd->add_flag("--png", o->png, "also write a PNG preview per skeleton");
+    cmd->add_option("--view", o->view, "preview camera: side, front, top, three-quarter");
+    cmd->add_option("--size", o->size, "preview size WxH");
+    cmd->add_option("-o,--output", o->outputDirectory, "output directory")->required();
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace ramus::cli
