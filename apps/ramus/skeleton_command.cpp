@@ -35,7 +35,7 @@ struct SkeletonOptions {
     std::string resolution = "box";
     std::vector<std::uint64_t> seed;
     std::string spacing = "arc_length";
-    std::string spread = "model";
+    std::string spread = "thesis";
     bool png = false;
     std::string view = "side";
     std::string size = "800x800";
@@ -155,9 +155,9 @@ void addInputOptions(CLI::App& cmd, SkeletonOptions& o) {
     cmd.add_option("--length", o.length, "scale to this body length in metres")->expected(1);
     cmd.add_option("--spacing", o.spacing, "vertebra spacing along the spine curves")
         ->check(CLI::IsMember({"arc_length", "parameter"}));
-    cmd.add_option(
-           "--spread", o.spread,
-           "PCA sampling: model = N(0, lambda), thesis = lambda*N(0, 1) (closer to the mean)")
+    cmd.add_option("--spread", o.spread,
+                   "PCA sampling: thesis = lambda*N(0, 1) (default, plausible), model = N(0, "
+                   "lambda) (wilder)")
         ->check(CLI::IsMember({"model", "thesis"}));
     cmd.add_option("--species", o.species, "species data file instead of the built-in 44");
 }

@@ -186,7 +186,10 @@ struct SkeletonInputs {
     std::string headKind;                ///< bone-library skull kind; empty = the default
     std::optional<std::string> example;  ///< construct from this species (English/German)
     SpineSpacing spacing = SpineSpacing::ArcLength;
-    SampleSpread spread = SampleSpread::Model;
+    /// How widely random PCA points spread. Thesis (λ·N(0, 1), what the thesis's implementation
+    /// and its figures use) is the default because it keeps random skeletons plausible; Model
+    /// (N(0, λ), the distribution the thesis describes) gives wilder variety.
+    SampleSpread spread = SampleSpread::Thesis;
     std::optional<double> heightMetres;  ///< overrides the size from the weight
     std::optional<double> lengthMetres;  ///< overrides the size from the weight
 };

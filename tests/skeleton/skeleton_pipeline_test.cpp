@@ -109,7 +109,10 @@ void expectFeetOnGround(const Skeleton& s) {
 
 TEST(SkeletonPipeline, RandomSkeletonsKeepEveryInvariant) {
     for (std::uint64_t seed = 0; seed < 1000; ++seed) {
-        const Skeleton s = generate({}, seed);
+        // Half with the default spread, half with the wider model spread.
+        SkeletonInputs inputs;
+        inputs.spread = seed % 2 == 0 ? SampleSpread::Thesis : SampleSpread::Model;
+        const Skeleton s = generate(inputs, seed);
         expectValidSkeleton(s, "seed " + std::to_string(seed));
         expectFeetOnGround(s);
         if (HasFatalFailure()) return;
