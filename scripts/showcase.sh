@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Generates the showcase: every example L-system as .glb, .obj (+.mtl) and a .png preview.
+# Generates the showcase: every example L-system and colonization config, and the thesis's
+# skeleton showcase cases, as .glb, .obj (+.mtl) and .png previews.
 # Usage: scripts/showcase.sh RAMUS_BINARY OUT_DIR
 set -euo pipefail
 ramus=$1
@@ -17,3 +18,27 @@ for file in examples/lsystems/*.lsys; do
 done
 echo
 echo "showcase: $count L-systems written to $(cd "$out" && pwd)/lsystems (.glb, .obj/.mtl, .png)"
+
+mkdir -p "$out/colonize"
+for file in examples/colonize/*.json; do
+  name=$(basename "$file" .json)
+  "$ramus" colonize "$file" -o "$out/colonize/$name.glb" --png "$out/colonize/$name.png" \
+    --stats > "$out/colonize/$name.stats.json"
+  printf '  %-24s %s\n' "$name" "$(cat "$out/colonize/$name.stats.json")"
+done
+echo "showcase: colonization examples written to $(cd "$out" && pwd)/colonize"
+
+# The skeleton cases of seed 000 (figs 5.2, 5.4–5.6, 6.2) and a random set.
+sk="$out/skeletons"
+mkdir -p "$sk"
+skeleton() { "$ramus" skeleton --png --view side -o "$sk" "$@"; }
+skeleton --name bird --legs 2 --wings 2 --seed 1
+skeleton --name kangaroo --example Kangaroo --legs 2 --arms 2 --seed 1
+skeleton --name elephant --example "African elephant" --seed 1
+skeleton --name pegasus --legs 4 --wings 2 --two-per-girdle --seed 1
+skeleton --name centaur --legs 4 --arms 2 --neck-shoulder forced --seed 1
+skeleton --name eight_legs --legs 8 --two-per-girdle --neck-shoulder forbidden --seed 1
+skeleton --name fish --legs 0 --wings 0 --fins 4 --two-per-girdle --seed 1
+skeleton --name random --count 12 --seed 7
+skeleton --name elephant_variation --example "African elephant" --variations --count 4 --seed 3
+echo "showcase: skeletons written to $(cd "$sk" && pwd) (NAME<i>.glb/.obj/.json/.png)"

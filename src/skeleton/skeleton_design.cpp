@@ -76,7 +76,10 @@ std::vector<Condition> conditionsFor(const SkeletonInputs& inputs, Rng& rng) {
 
 Eigen::VectorXd choosePoint(const SkeletonStats& stats, const SkeletonInputs& inputs, Rng& rng) {
     if (inputs.example) return stats.fromExample(*inputs.example);
-    return stats.sampleConditioned(conditionsFor(inputs, rng), rng, inputs.spread);
+    const std::vector<Condition> conditions = conditionsFor(inputs, rng);
+    // Without conditions the model is the plain PCA; skip re-running the eigen-decomposition.
+    if (conditions.empty()) return stats.sample(rng, inputs.spread);
+    return stats.sampleConditioned(conditions, rng, inputs.spread);
 }
 
 int uniformCount(Rng& rng, int lo, int hi) {
