@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/json_text.hpp"
 #include "ramus/error.hpp"
 #include "ramus/file_util.hpp"
 #include "ramus/skeleton.hpp"
@@ -27,28 +28,6 @@ using Json = nlohmann::json;
 /// animals have at most 30 neck, 25 back and 20 tail vertebrae).
 constexpr std::int64_t kMaxVertebrae = 1000;
 
-// Line and column (1-based) of a byte offset.
-SourceLoc locationOf(std::string_view text, std::size_t offset, const std::string& fileName) {
-    SourceLoc loc{fileName, 1, 1};
-    offset = std::min(offset, text.size());
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++loc.line;
-            loc.column = 1;
-        } else {
-            ++loc.column;
-        }
-    }
-    return loc;
-}
-
-// A short rendering of a JSON value for "got …" in messages.
-std::string describe(const Json& value) {
-    std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
-    return text;
-}
-
 // Reads typed values and reports problems as "FILE: field 'a.b': message".
 class Reader {
 public:
@@ -61,7 +40,8 @@ public:
     // `object` must be a JSON object with only the `known` keys.
     void object(const Json& value, const std::string& field,
                 std::initializer_list<std::string_view> known) const {
-        if (!value.is_object()) fail(field, "expected an object; got " + describe(value));
+        if (!value.is_object())
+            fail(field, "expected an object; got " + detail::describeJson(value));
         for (const auto& item : value.items()) {
             if (std::find(known.begin(), known.end(), item.key()) == known.end()) {
                 fail(join(field, item.key()), "unknown field");
@@ -76,9 +56,11 @@ public:
     }
 
     double number(const Json& value, const std::string& field) const {
-        if (!value.is_number()) fail(field, "expected a number; got " + describe(value));
+        if (!value.is_number())
+            fail(field, "expected a number; got " + detail::describeJson(value));
         const double v = value.get<double>();
-        if (!std::isfinite(v)) fail(field, "expected a finite number; got " + describe(value));
+        if (!std::isfinite(v))
+            fail(field, "expected a finite number; got " + detail::describeJson(value));
         return v;
     }
 
@@ -86,13 +68,14 @@ public:
         const double v = number(value, field);
         if (v < lo || v > hi) {
             fail(field, "expected a number in [" + detail::shortest(lo) + ", " +
-                            detail::shortest(hi) + "]; got " + describe(value));
+                            detail::shortest(hi) + "]; got " + detail::describeJson(value));
         }
         return v;
     }
 
     int count(const Json& value, const std::string& field, std::int64_t lo, std::int64_t hi) const {
-        if (!value.is_number_integer()) fail(field, "expected an integer; got " + describe(value));
+        if (!value.is_number_integer())
+            fail(field, "expected an integer; got " + detail::describeJson(value));
         const std::int64_t v =
             value.is_number_unsigned()
                 ? static_cast<std::int64_t>(std::min<std::uint64_t>(
@@ -100,13 +83,14 @@ public:
                 : value.get<std::int64_t>();
         if (v < lo || v > hi) {
             fail(field, "expected an integer in [" + std::to_string(lo) + ", " +
-                            std::to_string(hi) + "]; got " + describe(value));
+                            std::to_string(hi) + "]; got " + detail::describeJson(value));
         }
         return static_cast<int>(v);
     }
 
     std::string string(const Json& value, const std::string& field) const {
-        if (!value.is_string()) fail(field, "expected a string; got " + describe(value));
+        if (!value.is_string())
+            fail(field, "expected a string; got " + detail::describeJson(value));
         return value.get<std::string>();
     }
 
@@ -116,7 +100,7 @@ public:
         const std::string expected =
             "expected an integer in [0, 18446744073709551615] or its "
             "decimal string; got " +
-            describe(value);
+            detail::describeJson(value);
         if (!value.is_string()) fail(field, expected);
         const std::string& s = value.get_ref<const std::string&>();
         std::uint64_t v = 0;
@@ -136,7 +120,7 @@ public:
         const std::string s = value.is_string() ? value.get<std::string>() : std::string();
         const std::optional<Enum> parsed = parse(s);
         if (!value.is_string() || !parsed) {
-            fail(field, "expected one of " + names + "; got " + describe(value));
+            fail(field, "expected one of " + names + "; got " + detail::describeJson(value));
         }
         return *parsed;
     }
@@ -163,7 +147,7 @@ void readFeaturePoint(const Reader& r, const Json& value, SkeletonDesign& design
     const std::string field = "design.feature_point";
     if (!value.is_array() || value.size() != static_cast<std::size_t>(kFeatureCount)) {
         r.fail(field, "expected an array of " + std::to_string(kFeatureCount) + " numbers; got " +
-                          describe(value));
+                          detail::describeJson(value));
     }
     design.featurePoint.resize(kFeatureCount);
     for (int i = 0; i < kFeatureCount; ++i) {
@@ -266,7 +250,8 @@ SkeletonDesign readDesign(const Reader& r, const Json& d) {
     const Json& heel = r.member(d, "design", "heel_draw");
     design.heelDraw = r.number(heel, "design.heel_draw");
     if (design.heelDraw < 0.0 || design.heelDraw >= 1.0) {
-        r.fail("design.heel_draw", "expected a number in [0, 1); got " + describe(heel));
+        r.fail("design.heel_draw",
+               "expected a number in [0, 1); got " + detail::describeJson(heel));
     }
     design.headKind = r.string(r.member(d, "design", "head_kind"), "design.head_kind");
     design.spacing = r.choice<SpineSpacing>(r.member(d, "design", "spacing"), "design.spacing",
@@ -276,7 +261,8 @@ SkeletonDesign readDesign(const Reader& r, const Json& d) {
     const Json& scale = r.member(d, "design", "metres_per_pixel");
     design.metresPerPixel = r.number(scale, "design.metres_per_pixel");
     if (design.metresPerPixel <= 0.0) {
-        r.fail("design.metres_per_pixel", "expected a number > 0; got " + describe(scale));
+        r.fail("design.metres_per_pixel",
+               "expected a number > 0; got " + detail::describeJson(scale));
     }
     return design;
 }
@@ -284,11 +270,11 @@ SkeletonDesign readDesign(const Reader& r, const Json& d) {
 void checkHeader(const Reader& r, const Json& root) {
     const Json& format = r.member(root, "", "format");
     if (!format.is_string() || format.get<std::string>() != "ramus-skeleton") {
-        r.fail("format", "expected \"ramus-skeleton\"; got " + describe(format));
+        r.fail("format", "expected \"ramus-skeleton\"; got " + detail::describeJson(format));
     }
     const Json& version = r.member(root, "", "version");
     if (!version.is_number_integer() || version.get<std::int64_t>() != kSkeletonMetadataVersion) {
-        r.fail("version", "unsupported version " + describe(version) +
+        r.fail("version", "unsupported version " + detail::describeJson(version) +
                               "; this ramus reads version " +
                               std::to_string(kSkeletonMetadataVersion));
     }
@@ -299,16 +285,7 @@ void checkHeader(const Reader& r, const Json& root) {
 LoadedSkeleton parseSkeletonMetadata(std::string_view text, const std::string& fileName) {
     Json root;
     try {
-        root = Json::parse(text.begin(), text.end());
-    } catch (const Json::parse_error& e) {
-        const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-        // nlohmann's message: "[json.exception.parse_error.101] parse error at line L, column C:
-        // <reason>"; the location is recomputed from the byte offset, the reason kept.
-        std::string what = e.what();
-        const std::size_t column = what.find(", column ");
-        const std::size_t reason = what.find(": ", column == std::string::npos ? 0 : column);
-        if (reason != std::string::npos) what = what.substr(reason + 2);
-        throw Error(locationOf(text, offset, fileName), "invalid JSON: " + what);
+        root = detail::parseJsonText(text, fileName);
     } catch (const Json::exception& e) {
         // Number overflow ("1e999") is reported as out_of_range, without an offset.
         std::string what = e.what();
@@ -317,7 +294,8 @@ LoadedSkeleton parseSkeletonMetadata(std::string_view text, const std::string& f
         throw Error(SourceLoc{fileName, 0, 0}, "invalid JSON: " + what);
     }
     const Reader r(fileName);
-    if (!root.is_object()) r.fail("(top level)", "expected an object; got " + describe(root));
+    if (!root.is_object())
+        r.fail("(top level)", "expected an object; got " + detail::describeJson(root));
     checkHeader(r, root);
     r.object(root, "", {"format", "version", "name", "seed", "design", "skeleton"});
     LoadedSkeleton loaded;

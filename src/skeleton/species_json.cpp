@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "core/json_text.hpp"
 #include "ramus/error.hpp"
 #include "ramus/file_util.hpp"
 #include "ramus/species.hpp"
@@ -20,28 +21,6 @@ using Json = nlohmann::json;
 
 constexpr std::string_view kFormat = "ramus-species";
 constexpr int kVersion = 1;
-
-// Line and column (1-based) of a byte offset.
-SourceLoc locationOf(std::string_view text, std::size_t offset, const std::string& fileName) {
-    SourceLoc loc{fileName, 1, 1};
-    offset = std::min(offset, text.size());
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++loc.line;
-            loc.column = 1;
-        } else {
-            ++loc.column;
-        }
-    }
-    return loc;
-}
-
-// A short rendering of a JSON value for "got …" in messages.
-std::string describe(const Json& value) {
-    std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
-    return text;
-}
 
 // Reports problems inside one record: "species[3] (Dromedary): field: message".
 class RecordContext {
@@ -57,18 +36,21 @@ public:
     void setName(const std::string& name) { where_ += " (" + name + ")"; }
 
     double number(const Json& value, const std::string& field, double minimum) const {
-        if (!value.is_number()) fail(field, "expected a number, got " + describe(value));
+        if (!value.is_number())
+            fail(field, "expected a number, got " + detail::describeJson(value));
         const double v = value.get<double>();
-        if (!std::isfinite(v)) fail(field, "expected a finite number, got " + describe(value));
+        if (!std::isfinite(v))
+            fail(field, "expected a finite number, got " + detail::describeJson(value));
         if (v < minimum) {
-            fail(field,
-                 "expected a number >= " + detail::shortest(minimum) + ", got " + describe(value));
+            fail(field, "expected a number >= " + detail::shortest(minimum) + ", got " +
+                            detail::describeJson(value));
         }
         return v;
     }
 
     std::string string(const Json& value, const std::string& field, bool allowEmpty) const {
-        if (!value.is_string()) fail(field, "expected a string, got " + describe(value));
+        if (!value.is_string())
+            fail(field, "expected a string, got " + detail::describeJson(value));
         std::string s = value.get<std::string>();
         if (!allowEmpty && s.empty()) fail(field, "expected a non-empty string, got \"\"");
         return s;
@@ -97,14 +79,15 @@ void rejectUnknownFields(const Json& object, std::initializer_list<std::string_v
 
 std::array<Vec2, kSpinePointCount> parseSpine(const Json& value, const RecordContext& ctx) {
     if (!value.is_array() || value.size() != kSpinePointCount) {
-        ctx.fail("spine", "expected an array of 10 [x, y] points, got " + describe(value));
+        ctx.fail("spine",
+                 "expected an array of 10 [x, y] points, got " + detail::describeJson(value));
     }
     std::array<Vec2, kSpinePointCount> spine;
     for (int i = 0; i < kSpinePointCount; ++i) {
         const Json& p = value[i];
         const std::string field = "spine[" + std::to_string(i) + "]";
         if (!p.is_array() || p.size() != 2) {
-            ctx.fail(field, "expected [x, y] with two numbers, got " + describe(p));
+            ctx.fail(field, "expected [x, y] with two numbers, got " + detail::describeJson(p));
         }
         spine[i] =
             Vec2(ctx.number(p[0], field + ".x", -1e300), ctx.number(p[1], field + ".y", -1e300));
@@ -113,7 +96,8 @@ std::array<Vec2, kSpinePointCount> parseSpine(const Json& value, const RecordCon
 }
 
 std::array<double, kLimbCount> parseLimbs(const Json& value, const RecordContext& ctx) {
-    if (!value.is_object()) ctx.fail("limbs", "expected an object, got " + describe(value));
+    if (!value.is_object())
+        ctx.fail("limbs", "expected an object, got " + detail::describeJson(value));
     std::array<double, kLimbCount> limbs{};
     rejectUnknownFields(value, {"upper_arm", "forearm", "hand", "thigh", "shank", "foot"}, ctx,
                         "limbs.");
@@ -127,7 +111,7 @@ std::array<double, kLimbCount> parseLimbs(const Json& value, const RecordContext
 }
 
 SpeciesRecord parseRecord(const Json& value, RecordContext ctx) {
-    if (!value.is_object()) ctx.fail("", "expected an object, got " + describe(value));
+    if (!value.is_object()) ctx.fail("", "expected an object, got " + detail::describeJson(value));
     SpeciesRecord r;
     r.name = ctx.string(require(value, "name", ctx), "name", false);
     ctx.setName(r.name);
@@ -158,12 +142,12 @@ void checkHeader(const Json& root, const RecordContext& ctx) {
     rejectUnknownFields(root, {"format", "version", "attribution", "frame", "species"}, ctx);
     const Json& format = require(root, "format", ctx);
     if (!format.is_string() || format.get<std::string>() != kFormat) {
-        ctx.fail("format", "expected \"ramus-species\", got " + describe(format));
+        ctx.fail("format", "expected \"ramus-species\", got " + detail::describeJson(format));
     }
     const Json& version = require(root, "version", ctx);
     if (!version.is_number_integer() || version.get<long long>() != kVersion) {
-        ctx.fail("version",
-                 "expected 1 (the only version this ramus reads), got " + describe(version));
+        ctx.fail("version", "expected 1 (the only version this ramus reads), got " +
+                                detail::describeJson(version));
     }
     if (root.contains("attribution")) ctx.string(root["attribution"], "attribution", true);
     if (root.contains("frame")) {
@@ -173,7 +157,7 @@ void checkHeader(const Json& root, const RecordContext& ctx) {
             ctx.fail("frame",
                      "expected {\"width\": 1000, \"height\": 1000, \"y_axis\": \"up\", "
                      "\"head\": \"-x\"} (the only frame supported), got " +
-                         describe(root["frame"]));
+                         detail::describeJson(root["frame"]));
         }
     }
 }
@@ -188,23 +172,17 @@ std::string lowerAscii(std::string s) {
 std::vector<SpeciesRecord> parseSpeciesJson(std::string_view text, const std::string& fileName) {
     Json root;
     try {
-        root = Json::parse(text.begin(), text.end());
-    } catch (const Json::parse_error& e) {
-        // nlohmann's message is "[json.exception.parse_error.101] parse error at line …";
-        // keep the part after the location, ours comes from the byte offset.
-        std::string what = e.what();
-        const std::size_t colon = what.find(": ", what.find("parse error"));
-        if (colon != std::string::npos) what = what.substr(colon + 2);
-        throw Error(locationOf(text, e.byte > 0 ? e.byte - 1 : 0, fileName),
-                    "invalid JSON: " + what);
+        root = detail::parseJsonText(text, fileName);
     } catch (const Json::exception& e) {
         throw Error(SourceLoc{fileName, 0, 0}, std::string("invalid JSON: ") + e.what());
     }
     const RecordContext top(fileName, "species file");
-    if (!root.is_object()) top.fail("", "expected a JSON object, got " + describe(root));
+    if (!root.is_object())
+        top.fail("", "expected a JSON object, got " + detail::describeJson(root));
     checkHeader(root, top);
     const Json& list = require(root, "species", top);
-    if (!list.is_array()) top.fail("species", "expected an array, got " + describe(list));
+    if (!list.is_array())
+        top.fail("species", "expected an array, got " + detail::describeJson(list));
 
     std::vector<SpeciesRecord> species;
     std::set<std::string> seen;
