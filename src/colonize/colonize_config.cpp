@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/json_text.hpp"
 #include "ramus/colonize.hpp"
 #include "ramus/error.hpp"
 #include "ramus/file_util.hpp"
@@ -374,12 +375,7 @@ void parseShapeLists(const ConfigReader& r, const Json& j, ColonizeConfig& c, Me
 }  // namespace
 
 ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::string& fileName) {
-    Json j;
-    try {
-        j = Json::parse(jsonText);
-    } catch (const Json::parse_error& e) {
-        throw Error(fileName + ": invalid JSON: " + e.what());
-    }
+    const Json j = detail::parseJsonText(jsonText, fileName);
     const ConfigReader r(fileName);
     if (!j.is_object()) throw Error(fileName + ": expected a JSON object at the top level");
     r.checkKeys(j, "",

@@ -86,7 +86,7 @@ TEST(ColonizeConfig, AnEmptyObjectGivesTheDefaults) {
 }
 
 TEST(ColonizeConfig, InvalidJsonNamesTheFile) {
-    EXPECT_EQ(errorOf("{\"step\": }").rfind("tree.json: invalid JSON: ", 0), 0u);
+    EXPECT_EQ(errorOf("{\"step\": }").rfind("tree.json:1:10: invalid JSON: ", 0), 0u);
 }
 
 TEST(ColonizeConfig, TopLevelMustBeAnObject) {
