@@ -65,10 +65,9 @@ std::vector<int> addSpine(ramus::Skeleton& s, int parent, SpineRegion region, in
 // A leg (girdle, upper, lower, foot) on `parent`, on the left (+z) or right side.
 void addLeg(ramus::Skeleton& s, int parent, bool front, Side side, ramus::Rng& rng) {
     const double z = side == Side::Left ? 12.0 : -12.0;
-    const BoneKind kinds[4] = {front ? BoneKind::Scapula : BoneKind::Pelvis,
-                               front ? BoneKind::UpperArm : BoneKind::Thigh,
-                               front ? BoneKind::Forearm : BoneKind::Shank,
-                               front ? BoneKind::Hand : BoneKind::Foot};
+    const BoneKind kinds[4] = {
+        front ? BoneKind::Scapula : BoneKind::Pelvis, front ? BoneKind::UpperArm : BoneKind::Thigh,
+        front ? BoneKind::Forearm : BoneKind::Shank, front ? BoneKind::Hand : BoneKind::Foot};
     int p = parent;
     for (int k = 0; k < 4; ++k) {
         Bone b = bone(kinds[k], p, k == 0 ? Vec3(10.0, 0.0, z) : Vec3(rng.uniform(40, 60), 0, 0),
@@ -94,8 +93,8 @@ ramus::Skeleton quadruped() {
     s.bones.push_back(bone(BoneKind::Root, -1, {500, 300, 0}, Mat3::Identity(), Vec3::Zero()));
     const std::vector<int> back = addSpine(s, 0, SpineRegion::Back, 24, 1.5, rng);
     const std::vector<int> neck = addSpine(s, 0, SpineRegion::Neck, 13, -4.0, rng);
-    s.bones.push_back(bone(BoneKind::Skull, neck.back(), {22, 0, 0}, turn(Vec3::UnitZ(), 30.0),
-                           {60, 30, 30}));
+    s.bones.push_back(
+        bone(BoneKind::Skull, neck.back(), {22, 0, 0}, turn(Vec3::UnitZ(), 30.0), {60, 30, 30}));
     addSpine(s, back.back(), SpineRegion::Tail, 16, 3.0, rng);
     for (int r = 0; r < 15; ++r) {
         for (Side side : {Side::Left, Side::Right}) {
@@ -152,9 +151,9 @@ ramus::Mesh treeMesh(std::int64_t edges) {
             heading = (heading + Vec3(rng.gauss(0, 0.1), 0.02, rng.gauss(0, 0.1))).normalized();
             node = tree.addChild(node, tree.node(node).position + 0.2 * heading);
             if (rng.uniform01() < 0.3) {
-                buds.emplace_back(node, (heading + Vec3(rng.gauss(0, 1), 0.3, rng.gauss(0, 1))
-                                                       .normalized())
-                                            .normalized());
+                buds.emplace_back(
+                    node, (heading + Vec3(rng.gauss(0, 1), 0.3, rng.gauss(0, 1)).normalized())
+                              .normalized());
             }
         }
         if (static_cast<std::int64_t>(tree.edgeCount()) >= edges) break;

@@ -8,8 +8,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <nlohmann/json.hpp>
+#include <span>
 
+#include "io/json_writer.hpp"
 #include "io/scene_check.hpp"
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
@@ -21,7 +22,7 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "GLB is little-endian");
 
-using Json = nlohmann::ordered_json;
+using io::JsonWriter;
 
 constexpr int kUnsignedByte = 5121;
 constexpr int kUnsignedShort = 5123;
@@ -34,35 +35,10 @@ constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 constexpr const char* kGenerator = "ramus 0.1.0";
 
-// A float as the JSON number with the fewest digits that reads back as the same float.
-double jsonFloat(float v) {
-    const std::string text = io::formatFloat(v);
-    double d = 0.0;
-    std::from_chars(text.data(), text.data() + text.size(), d);
-    return d;
-}
-
-Json jsonVec(const float* v, int n) {
-    Json a = Json::array();
-    for (int i = 0; i < n; ++i) a.push_back(jsonFloat(v[i]));
-    return a;
-}
-
-// Unit normals as glTF requires; a zero normal (degenerate geometry) becomes +Y.
-std::vector<Vec3f> unitNormals(const std::vector<Vec3f>& normals) {
-    std::vector<Vec3f> out(normals.size());
-    for (std::size_t i = 0; i < normals.size(); ++i) {
-        const float len = normals[i].norm();
-        out[i] = len > 1e-20f ? Vec3f(normals[i] / len) : Vec3f(0.0f, 1.0f, 0.0f);
-    }
-    return out;
-}
-
 // glTF tangents: unit xyz and w exactly ±1. A zero tangent becomes a unit vector perpendicular
 // to the vertex normal (or +X without normals).
-std::vector<Vec4f> unitTangents(const std::vector<Vec4f>& tangents,
-                                const std::vector<Vec3f>& normals) {
-    std::vector<Vec4f> out(tangents.size());
+void unitTangents(const std::vector<Vec4f>& tangents, const std::vector<Vec3f>& normals,
+                  float* out) {
     for (std::size_t i = 0; i < tangents.size(); ++i) {
         Vec3f t = tangents[i].head<3>();
         const float len = t.norm();
@@ -75,9 +51,9 @@ std::vector<Vec4f> unitTangents(const std::vector<Vec4f>& tangents,
         } else {
             t = Vec3f::UnitX();
         }
-        out[i] = Vec4f(t.x(), t.y(), t.z(), tangents[i].w() < 0.0f ? -1.0f : 1.0f);
+        const float v[4] = {t.x(), t.y(), t.z(), tangents[i].w() < 0.0f ? -1.0f : 1.0f};
+        std::memcpy(out + 4 * i, v, sizeof v);  // the BIN chunk is only 4-byte aligned
     }
-    return out;
 }
 
 // glTF WEIGHTS_0: each vertex's weights divided by their sum (checkScene allows ±0.001), the
@@ -102,36 +78,40 @@ void normalizeSkinning(const Mesh& mesh, std::vector<std::array<std::uint16_t, 4
     }
 }
 
-Json materialJson(const Material& m) {
-    Json pbr;
-    pbr["baseColorFactor"] = jsonVec(m.baseColor.data(), 4);
-    pbr["metallicFactor"] = jsonFloat(m.metallic);
-    pbr["roughnessFactor"] = jsonFloat(m.roughness);
-    Json j;
-    if (!m.name.empty()) j["name"] = m.name;
-    j["pbrMetallicRoughness"] = std::move(pbr);
-    if (m.baseColor.w() < 1.0f) j["alphaMode"] = "BLEND";
-    if (m.doubleSided) j["doubleSided"] = true;
-    return j;
-}
-
 bool sameMaterial(const Material& a, const Material& b) {
     return a.name == b.name && a.baseColor == b.baseColor && a.metallic == b.metallic &&
            a.roughness == b.roughness && a.doubleSided == b.doubleSided;
 }
 
-Json parseExtras(const std::string& text, const std::string& where) {
-    Json extras;
-    try {
-        extras = Json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw Error(where + ": extras are not valid JSON: " + e.what());
+// JSON's name for the type of the valid JSON value that starts with `first`.
+const char* jsonTypeName(char first) {
+    switch (first) {
+        case '[':
+            return "array";
+        case '"':
+            return "string";
+        case 't':
+        case 'f':
+            return "boolean";
+        case 'n':
+            return "null";
+        default:
+            return "number";
     }
-    if (!extras.is_object()) {
-        throw Error(where + ": extras must be a JSON object; got " +
-                    std::string(extras.type_name()));
+}
+
+// Validates an extras text (a JSON object) and writes it compactly as the value of "extras";
+// where() names the owner in error messages.
+template <typename Where>
+void writeExtras(JsonWriter& w, const std::string& text, Where where) {
+    w.key("extras");
+    const std::string error = w.jsonValue(text);
+    if (!error.empty()) throw Error(where() + ": extras are not valid JSON: " + error);
+    const std::size_t first = text.find_first_not_of(" \t\n\r");
+    if (text[first] != '{') {
+        throw Error(where() + ": extras must be a JSON object; got " +
+                    std::string(jsonTypeName(text[first])));
     }
-    return extras;
 }
 
 // An upper bound of the BIN chunk's size (every attribute at full width, 3 bytes of alignment
@@ -148,7 +128,8 @@ std::size_t binBytesBound(const Scene& scene) {
     return bytes + 3;
 }
 
-// Collects the JSON document and the binary chunk of one GLB.
+// Collects the JSON document (streamed, one string per top-level array) and the binary chunk of
+// one GLB.
 class GlbBuilder {
 public:
     GlbBuilder(const Scene& scene, std::string context)
@@ -157,121 +138,192 @@ public:
     std::string encode();
 
 private:
+    // A buffer view of `count` elements of T written by fill(T* destination), 4-byte aligned.
+    template <typename T, typename Fill>
+    int addBufferView(std::size_t count, int target, Fill fill);
     template <typename T>
-    int addBufferView(const std::vector<T>& data, int target);
+    int addBufferView(const std::vector<T>& data, int target) {
+        const std::size_t bytes = data.size() * sizeof(T);
+        return addBufferView<char>(
+            bytes, target, [&data, bytes](char* dst) { std::memcpy(dst, data.data(), bytes); });
+    }
     int addAccessor(int view, std::size_t byteOffset, int componentType, std::size_t count,
-                    const char* type);
+                    const char* type, const Vec3f* bounds = nullptr);
     int addMaterial(const Material& material);
-    int addVertexAttributes(const Mesh& mesh, Json& attributes);
-    void addSkinAttributes(const Mesh& mesh, Json& attributes);
+    void addVertexAttributes(const Mesh& mesh, JsonWriter& attributes);
+    void addSkinAttributes(const Mesh& mesh, JsonWriter& attributes);
+    int addIndices(const Mesh& mesh);
     int addMesh(const Mesh& mesh);
     void addNodes(const std::vector<int>& meshIndex);
+    void addNode(std::size_t i, std::span<const int> children, const std::vector<int>& meshIndex);
     void addSkins();
-    Json sceneJson() const;
+    void writeName(JsonWriter& w, const std::string& name, const char* owner, std::size_t index);
+    void writeDocument(std::string& out);
 
     const Scene& scene_;
     std::string context_;
     std::string bin_;
-    Json bufferViews_ = Json::array();
-    Json accessors_ = Json::array();
-    Json materials_ = Json::array();
-    Json meshes_ = Json::array();
-    Json nodes_ = Json::array();
-    Json skins_ = Json::array();
+    std::string bufferViewsText_, accessorsText_, materialsText_, meshesText_, nodesText_,
+        skinsText_;
+    JsonWriter bufferViews_{bufferViewsText_}, accessors_{accessorsText_},
+        materials_{materialsText_}, meshes_{meshesText_}, nodes_{nodesText_}, skins_{skinsText_};
+    int bufferViewCount_ = 0, accessorCount_ = 0, meshCount_ = 0;
     std::vector<int> roots_;
     std::vector<Material> materialKeys_;
 };
 
-template <typename T>
-int GlbBuilder::addBufferView(const std::vector<T>& data, int target) {
+template <typename T, typename Fill>
+int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill) {
+    static_assert(alignof(T) <= 4, "buffer views are only 4-byte aligned");
     bin_.resize((bin_.size() + 3) & ~std::size_t{3}, '\0');  // 4-byte aligned views
     const std::size_t offset = bin_.size();
-    const std::size_t bytes = data.size() * sizeof(T);
+    const std::size_t bytes = count * sizeof(T);
     bin_.resize(offset + bytes);
-    std::memcpy(bin_.data() + offset, data.data(), bytes);
-    Json view;
-    view["buffer"] = 0;
-    view["byteOffset"] = offset;
-    view["byteLength"] = bytes;
-    if (target != 0) view["target"] = target;  // inverse bind matrices have none
-    bufferViews_.push_back(std::move(view));
-    return static_cast<int>(bufferViews_.size()) - 1;
+    fill(reinterpret_cast<T*>(bin_.data() + offset));
+    JsonWriter& w = bufferViews_;
+    w.beginObject();
+    w.key("buffer");
+    w.value(0);
+    w.key("byteOffset");
+    w.value(std::uint64_t{offset});
+    w.key("byteLength");
+    w.value(std::uint64_t{bytes});
+    if (target != 0) {  // inverse bind matrices have none
+        w.key("target");
+        w.value(target);
+    }
+    w.endObject();
+    return bufferViewCount_++;
 }
 
+// bounds: {min, max} (POSITION needs them) or null.
 int GlbBuilder::addAccessor(int view, std::size_t byteOffset, int componentType, std::size_t count,
-                            const char* type) {
-    Json a;
-    a["bufferView"] = view;
-    if (byteOffset != 0) a["byteOffset"] = byteOffset;
-    a["componentType"] = componentType;
-    a["count"] = count;
-    a["type"] = type;
-    accessors_.push_back(std::move(a));
-    return static_cast<int>(accessors_.size()) - 1;
+                            const char* type, const Vec3f* bounds) {
+    JsonWriter& w = accessors_;
+    w.beginObject();
+    w.key("bufferView");
+    w.value(view);
+    if (byteOffset != 0) {
+        w.key("byteOffset");
+        w.value(std::uint64_t{byteOffset});
+    }
+    w.key("componentType");
+    w.value(componentType);
+    w.key("count");
+    w.value(std::uint64_t{count});
+    w.key("type");
+    w.value(type);
+    if (bounds != nullptr) {
+        w.key("min");
+        w.numbers(bounds[0].data(), 3);
+        w.key("max");
+        w.numbers(bounds[1].data(), 3);
+    }
+    w.endObject();
+    return accessorCount_++;
 }
 
-int GlbBuilder::addMaterial(const Material& material) {
+int GlbBuilder::addMaterial(const Material& m) {
     for (std::size_t i = 0; i < materialKeys_.size(); ++i) {
-        if (sameMaterial(materialKeys_[i], material)) return static_cast<int>(i);
+        if (sameMaterial(materialKeys_[i], m)) return static_cast<int>(i);
     }
-    materialKeys_.push_back(material);
-    materials_.push_back(materialJson(material));
-    return static_cast<int>(materials_.size()) - 1;
+    materialKeys_.push_back(m);
+    JsonWriter& w = materials_;
+    w.beginObject();
+    if (!m.name.empty()) writeName(w, m.name, "material", materialKeys_.size() - 1);
+    w.key("pbrMetallicRoughness");
+    w.beginObject();
+    w.key("baseColorFactor");
+    w.numbers(m.baseColor.data(), 4);
+    w.key("metallicFactor");
+    w.value(m.metallic);
+    w.key("roughnessFactor");
+    w.value(m.roughness);
+    w.endObject();
+    if (m.baseColor.w() < 1.0f) {
+        w.key("alphaMode");
+        w.value("BLEND");
+    }
+    if (m.doubleSided) {
+        w.key("doubleSided");
+        w.value(true);
+    }
+    w.endObject();
+    return static_cast<int>(materialKeys_.size()) - 1;
 }
 
-// Writes POSITION (with the min/max glTF requires), NORMAL, TANGENT and TEXCOORD_0 accessors
-// shared by all primitives of the mesh; returns the POSITION accessor.
-int GlbBuilder::addVertexAttributes(const Mesh& mesh, Json& attributes) {
+// Writes POSITION (with the min/max glTF requires), NORMAL (unit; a zero normal becomes +Y),
+// TANGENT and TEXCOORD_0 accessors shared by all primitives of the mesh into the attributes
+// object.
+void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
     const std::size_t n = mesh.positions.size();
-    Vec3f lo = mesh.positions[0], hi = mesh.positions[0];
+    Vec3f bounds[2] = {mesh.positions[0], mesh.positions[0]};
     for (const Vec3f& p : mesh.positions) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
+        bounds[0] = bounds[0].cwiseMin(p);
+        bounds[1] = bounds[1].cwiseMax(p);
     }
-    const int position =
-        addAccessor(addBufferView(mesh.positions, kArrayBuffer), 0, kFloat, n, "VEC3");
-    accessors_[position]["min"] = jsonVec(lo.data(), 3);
-    accessors_[position]["max"] = jsonVec(hi.data(), 3);
-    attributes["POSITION"] = position;
+    attributes.key("POSITION");
+    attributes.value(
+        addAccessor(addBufferView(mesh.positions, kArrayBuffer), 0, kFloat, n, "VEC3", bounds));
     if (!mesh.normals.empty()) {
-        const int view = addBufferView(unitNormals(mesh.normals), kArrayBuffer);
-        attributes["NORMAL"] = addAccessor(view, 0, kFloat, n, "VEC3");
+        const int view = addBufferView<Vec3f>(n, kArrayBuffer, [&mesh](Vec3f* dst) {
+            for (const Vec3f& v : mesh.normals) {
+                const float len = v.norm();
+                *dst++ = len > 1e-20f ? Vec3f(v / len) : Vec3f(0.0f, 1.0f, 0.0f);
+            }
+        });
+        attributes.key("NORMAL");
+        attributes.value(addAccessor(view, 0, kFloat, n, "VEC3"));
     }
     if (!mesh.tangents.empty()) {
-        const int view = addBufferView(unitTangents(mesh.tangents, mesh.normals), kArrayBuffer);
-        attributes["TANGENT"] = addAccessor(view, 0, kFloat, n, "VEC4");
+        const int view = addBufferView<float>(4 * n, kArrayBuffer, [&mesh](float* dst) {
+            unitTangents(mesh.tangents, mesh.normals, dst);
+        });
+        attributes.key("TANGENT");
+        attributes.value(addAccessor(view, 0, kFloat, n, "VEC4"));
     }
     if (!mesh.uvs.empty()) {
-        const int view = addBufferView(mesh.uvs, kArrayBuffer);
-        attributes["TEXCOORD_0"] = addAccessor(view, 0, kFloat, n, "VEC2");
+        attributes.key("TEXCOORD_0");
+        attributes.value(addAccessor(addBufferView(mesh.uvs, kArrayBuffer), 0, kFloat, n, "VEC2"));
     }
     if (!mesh.joints.empty()) addSkinAttributes(mesh, attributes);
-    return position;
 }
 
 // JOINTS_0 as UNSIGNED_BYTE when every joint index fits, else UNSIGNED_SHORT; WEIGHTS_0 as
 // normalised FLOAT.
-void GlbBuilder::addSkinAttributes(const Mesh& mesh, Json& attributes) {
+void GlbBuilder::addSkinAttributes(const Mesh& mesh, JsonWriter& attributes) {
     std::vector<std::array<std::uint16_t, 4>> joints;
     std::vector<Vec4f> weights;
     normalizeSkinning(mesh, joints, weights);
     std::uint16_t maxJoint = 0;
     for (const auto& j : joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
+    const std::size_t n = joints.size();
     int jointView = 0;
     if (maxJoint <= 255) {
-        std::vector<std::array<std::uint8_t, 4>> narrow(joints.size());
-        for (std::size_t v = 0; v < joints.size(); ++v) {
-            for (int k = 0; k < 4; ++k) narrow[v][k] = static_cast<std::uint8_t>(joints[v][k]);
-        }
-        jointView = addBufferView(narrow, kArrayBuffer);
+        jointView = addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [&joints](std::uint8_t* dst) {
+            for (const auto& j : joints) {
+                for (int k = 0; k < 4; ++k) *dst++ = static_cast<std::uint8_t>(j[k]);
+            }
+        });
     } else {
         jointView = addBufferView(joints, kArrayBuffer);
     }
-    const std::size_t n = joints.size();
-    attributes["JOINTS_0"] =
-        addAccessor(jointView, 0, maxJoint <= 255 ? kUnsignedByte : kUnsignedShort, n, "VEC4");
-    attributes["WEIGHTS_0"] =
-        addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4");
+    attributes.key("JOINTS_0");
+    attributes.value(
+        addAccessor(jointView, 0, maxJoint <= 255 ? kUnsignedByte : kUnsignedShort, n, "VEC4"));
+    attributes.key("WEIGHTS_0");
+    attributes.value(addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4"));
+}
+
+// The mesh's index buffer view: UNSIGNED_SHORT when every index fits below 65535 (65535 is the
+// primitive restart value), else UNSIGNED_INT.
+int GlbBuilder::addIndices(const Mesh& mesh) {
+    if (mesh.positions.size() > 65535) return addBufferView(mesh.indices, kElementArrayBuffer);
+    return addBufferView<std::uint16_t>(mesh.indices.size(), kElementArrayBuffer,
+                                        [&mesh](std::uint16_t* dst) {
+                                            for (std::uint32_t i : mesh.indices)
+                                                *dst++ = static_cast<std::uint16_t>(i);
+                                        });
 }
 
 // One glTF mesh: shared vertex accessors, one index buffer view, one index accessor and one
@@ -280,152 +332,239 @@ void GlbBuilder::addSkinAttributes(const Mesh& mesh, Json& attributes) {
 int GlbBuilder::addMesh(const Mesh& mesh) {
     const std::vector<MeshPrimitive> prims = io::drawnPrimitives(mesh);
     if (prims.empty()) return -1;
-    Json attributes;
+    std::string attributesText;
+    JsonWriter attributes(attributesText);
+    attributes.beginObject();
     addVertexAttributes(mesh, attributes);
-    // UNSIGNED_SHORT when every index fits below 65535 (65535 is the primitive restart value).
+    attributes.endObject();
+    const int indexView = addIndices(mesh);
     const bool shortIndices = mesh.positions.size() <= 65535;
-    int indexView = 0;
-    if (shortIndices) {
-        std::vector<std::uint16_t> narrow(mesh.indices.size());
-        for (std::size_t i = 0; i < narrow.size(); ++i) {
-            narrow[i] = static_cast<std::uint16_t>(mesh.indices[i]);
-        }
-        indexView = addBufferView(narrow, kElementArrayBuffer);
-    } else {
-        indexView = addBufferView(mesh.indices, kElementArrayBuffer);
-    }
-    const std::size_t indexSize = shortIndices ? 2 : 4;
-    Json primitives = Json::array();
+    JsonWriter& w = meshes_;
+    w.beginObject();
+    if (!mesh.name.empty()) writeName(w, mesh.name, "mesh", meshCount_);
+    w.key("primitives");
+    w.beginArray();
     for (const MeshPrimitive& p : prims) {
-        Json prim;
-        prim["attributes"] = attributes;
-        prim["indices"] =
-            addAccessor(indexView, p.firstIndex * indexSize,
-                        shortIndices ? kUnsignedShort : kUnsignedInt, p.indexCount, "SCALAR");
-        prim["material"] = addMaterial(io::primitiveMaterial(mesh, p));
-        if (!p.name.empty()) prim["extras"] = Json{{"name", p.name}};
-        primitives.push_back(std::move(prim));
+        w.beginObject();
+        w.key("attributes");
+        w.rawValue(attributesText);
+        w.key("indices");
+        w.value(addAccessor(indexView, std::size_t{p.firstIndex} * (shortIndices ? 2 : 4),
+                            shortIndices ? kUnsignedShort : kUnsignedInt, p.indexCount, "SCALAR"));
+        w.key("material");
+        w.value(addMaterial(io::primitiveMaterial(mesh, p)));
+        if (!p.name.empty()) {
+            w.key("extras");
+            w.beginObject();
+            writeName(w, p.name, "primitive", &p - prims.data());
+            w.endObject();
+        }
+        w.endObject();
     }
-    Json j;
-    if (!mesh.name.empty()) j["name"] = mesh.name;
-    j["primitives"] = std::move(primitives);
-    meshes_.push_back(std::move(j));
-    return static_cast<int>(meshes_.size()) - 1;
+    w.endArray();
+    w.endObject();
+    return meshCount_++;
+}
+
+// "name": the name of item `index` of kind `owner` ("node", "mesh", …).
+void GlbBuilder::writeName(JsonWriter& w, const std::string& name, const char* owner,
+                           std::size_t index) {
+    w.key("name");
+    try {
+        w.value(name);
+    } catch (const Error& e) {
+        throw Error(context_ + ": " + owner + " " + std::to_string(index) + " name: " + e.what());
+    }
 }
 
 void GlbBuilder::addNodes(const std::vector<int>& meshIndex) {
     if (scene_.nodes.empty()) {  // one root node per written mesh
+        int count = 0;
         for (std::size_t m = 0; m < meshIndex.size(); ++m) {
             if (meshIndex[m] < 0) continue;
-            Json node;
-            if (!scene_.meshes[m].name.empty()) node["name"] = scene_.meshes[m].name;
-            node["mesh"] = meshIndex[m];
-            roots_.push_back(static_cast<int>(nodes_.size()));
-            nodes_.push_back(std::move(node));
+            nodes_.beginObject();
+            if (!scene_.meshes[m].name.empty()) {
+                writeName(nodes_, scene_.meshes[m].name, "mesh", m);
+            }
+            nodes_.key("mesh");
+            nodes_.value(meshIndex[m]);
+            nodes_.endObject();
+            roots_.push_back(count++);
         }
         return;
     }
-    std::vector<std::vector<int>> children(scene_.nodes.size());
-    for (std::size_t i = 0; i < scene_.nodes.size(); ++i) {
+    // Children lists in node order, as offsets into one flat array.
+    const std::size_t n = scene_.nodes.size();
+    std::vector<int> childCount(n + 1, 0), children(n);
+    for (const SceneNode& node : scene_.nodes) {
+        if (node.parent >= 0) ++childCount[node.parent + 1];
+    }
+    for (std::size_t i = 0; i < n; ++i) childCount[i + 1] += childCount[i];
+    std::vector<int> next(childCount.begin(), childCount.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) {
         const int parent = scene_.nodes[i].parent;
-        (parent < 0 ? roots_ : children[parent]).push_back(static_cast<int>(i));
+        if (parent < 0) {
+            roots_.push_back(static_cast<int>(i));
+        } else {
+            children[next[parent]++] = static_cast<int>(i);
+        }
     }
-    for (std::size_t i = 0; i < scene_.nodes.size(); ++i) {
-        const SceneNode& n = scene_.nodes[i];
-        Json node;
-        if (!n.name.empty()) node["name"] = n.name;
-        if (!children[i].empty()) node["children"] = children[i];
-        if (n.mesh >= 0 && meshIndex[n.mesh] >= 0) {
-            node["mesh"] = meshIndex[n.mesh];
-            if (n.skin >= 0) node["skin"] = n.skin;
-        }
-        const Eigen::Quaterniond q = n.rotation.normalized();
-        if (q.coeffs() != Eigen::Quaterniond::Identity().coeffs()) {
-            node["rotation"] = {q.x(), q.y(), q.z(), q.w()};
-        }
-        if (n.scale != Vec3::Ones()) node["scale"] = {n.scale.x(), n.scale.y(), n.scale.z()};
-        if (n.translation != Vec3::Zero()) {
-            node["translation"] = {n.translation.x(), n.translation.y(), n.translation.z()};
-        }
-        if (!n.extrasJson.empty()) {
-            node["extras"] = parseExtras(
-                n.extrasJson, context_ + ": node " + std::to_string(i) + " ('" + n.name + "')");
-        }
-        nodes_.push_back(std::move(node));
+    for (std::size_t i = 0; i < n; ++i) {
+        addNode(i, {children.begin() + childCount[i], children.begin() + childCount[i + 1]},
+                meshIndex);
     }
+}
+
+void GlbBuilder::addNode(std::size_t i, std::span<const int> children,
+                         const std::vector<int>& meshIndex) {
+    const SceneNode& n = scene_.nodes[i];
+    JsonWriter& w = nodes_;
+    w.beginObject();
+    if (!n.name.empty()) writeName(w, n.name, "node", i);
+    if (!children.empty()) {
+        w.key("children");
+        w.numbers(children.data(), children.size());
+    }
+    if (n.mesh >= 0 && meshIndex[n.mesh] >= 0) {
+        w.key("mesh");
+        w.value(meshIndex[n.mesh]);
+        if (n.skin >= 0) {
+            w.key("skin");
+            w.value(n.skin);
+        }
+    }
+    const Eigen::Quaterniond q = n.rotation.normalized();
+    if (q.coeffs() != Eigen::Quaterniond::Identity().coeffs()) {
+        w.key("rotation");
+        w.numbers(q.coeffs().data(), 4);  // x, y, z, w
+    }
+    if (n.scale != Vec3::Ones()) {
+        w.key("scale");
+        w.numbers(n.scale.data(), 3);
+    }
+    if (n.translation != Vec3::Zero()) {
+        w.key("translation");
+        w.numbers(n.translation.data(), 3);
+    }
+    if (!n.extrasJson.empty()) {
+        writeExtras(w, n.extrasJson, [&] {
+            return context_ + ": node " + std::to_string(i) + " ('" + n.name + "')";
+        });
+    }
+    w.endObject();
 }
 
 // Skins with their inverse bind matrices (MAT4 FLOAT, column-major, in a buffer view without
 // a target, as glTF §3.7.3.1 asks).
 void GlbBuilder::addSkins() {
-    for (const Skin& skin : scene_.skins) {
-        Json j;
-        if (!skin.name.empty()) j["name"] = skin.name;
+    for (std::size_t s = 0; s < scene_.skins.size(); ++s) {
+        const Skin& skin = scene_.skins[s];
+        JsonWriter& w = skins_;
+        w.beginObject();
+        if (!skin.name.empty()) writeName(w, skin.name, "skin", s);
         if (!skin.inverseBindMatrices.empty()) {
-            std::vector<float> matrices;
-            matrices.reserve(16 * skin.inverseBindMatrices.size());
-            for (const Mat4& m : skin.inverseBindMatrices) {
-                for (int k = 0; k < 16; ++k)
-                    matrices.push_back(static_cast<float>(m(k % 4, k / 4)));
-            }
-            j["inverseBindMatrices"] = addAccessor(addBufferView(matrices, 0), 0, kFloat,
-                                                   skin.inverseBindMatrices.size(), "MAT4");
+            const std::vector<Mat4>& matrices = skin.inverseBindMatrices;
+            const int view = addBufferView<float>(16 * matrices.size(), 0, [&](float* dst) {
+                for (const Mat4& m : matrices) {
+                    for (int k = 0; k < 16; ++k) *dst++ = static_cast<float>(m(k % 4, k / 4));
+                }
+            });
+            w.key("inverseBindMatrices");
+            w.value(addAccessor(view, 0, kFloat, matrices.size(), "MAT4"));
         }
-        if (skin.skeleton >= 0) j["skeleton"] = skin.skeleton;
-        j["joints"] = skin.joints;
-        skins_.push_back(std::move(j));
+        if (skin.skeleton >= 0) {
+            w.key("skeleton");
+            w.value(skin.skeleton);
+        }
+        w.key("joints");
+        w.numbers(skin.joints.data(), skin.joints.size());
+        w.endObject();
     }
 }
 
-Json GlbBuilder::sceneJson() const {
-    Json s = Json::object();
-    if (!roots_.empty()) s["nodes"] = roots_;
-    if (!scene_.extrasJson.empty()) {
-        s["extras"] = parseExtras(scene_.extrasJson, context_ + ": scene");
+// The JSON chunk's text (appended to `out`): the top-level object with its arrays in a fixed
+// order.
+void GlbBuilder::writeDocument(std::string& out) {
+    JsonWriter w(out);
+    w.beginObject();
+    w.key("asset");
+    w.beginObject();
+    const bool customGenerator = !scene_.generator.empty() && scene_.generator != "ramus";
+    w.key("generator");
+    try {
+        w.value(customGenerator ? std::string_view(scene_.generator) : kGenerator);
+    } catch (const Error& e) {
+        throw Error(context_ + ": generator: " + e.what());
     }
-    return s;
+    w.key("version");
+    w.value("2.0");
+    w.endObject();
+    w.key("scene");
+    w.value(0);
+    w.key("scenes");
+    w.beginArray();
+    w.beginObject();
+    if (!roots_.empty()) {
+        w.key("nodes");
+        w.numbers(roots_.data(), roots_.size());
+    }
+    if (!scene_.extrasJson.empty())
+        writeExtras(w, scene_.extrasJson, [&] { return context_ + ": scene"; });
+    w.endObject();
+    w.endArray();
+    const std::pair<const char*, const std::string*> arrays[] = {
+        {"nodes", &nodesText_},         {"meshes", &meshesText_},
+        {"skins", &skinsText_},         {"materials", &materialsText_},
+        {"accessors", &accessorsText_}, {"bufferViews", &bufferViewsText_}};
+    for (const auto& [name, text] : arrays) {
+        if (text->empty()) continue;
+        w.key(name);
+        w.beginArray();
+        w.rawValue(*text);  // the elements, comma-separated
+        w.endArray();
+    }
+    if (!bin_.empty()) {
+        w.key("buffers");
+        w.beginArray();
+        w.beginObject();
+        w.key("byteLength");
+        w.value(std::uint64_t{bin_.size()});
+        w.endObject();
+        w.endArray();
+    }
+    w.endObject();
 }
 
 std::string GlbBuilder::encode() {
     io::checkScene(scene_, context_);
     bin_.reserve(binBytesBound(scene_));
+    std::size_t extrasBytes = 0;
+    for (const SceneNode& node : scene_.nodes) extrasBytes += node.extrasJson.size();
+    nodesText_.reserve(extrasBytes + 160 * scene_.nodes.size());
     std::vector<int> meshIndex;
     for (const Mesh& mesh : scene_.meshes) meshIndex.push_back(addMesh(mesh));
     addNodes(meshIndex);
     addSkins();
     bin_.resize((bin_.size() + 3) & ~std::size_t{3}, '\0');
 
-    Json root;
-    const bool customGenerator = !scene_.generator.empty() && scene_.generator != "ramus";
-    root["asset"] = {{"generator", customGenerator ? scene_.generator : kGenerator},
-                     {"version", "2.0"}};
-    root["scene"] = 0;
-    root["scenes"] = Json::array({sceneJson()});
-    if (!nodes_.empty()) root["nodes"] = std::move(nodes_);
-    if (!meshes_.empty()) root["meshes"] = std::move(meshes_);
-    if (!skins_.empty()) root["skins"] = std::move(skins_);
-    if (!materials_.empty()) root["materials"] = std::move(materials_);
-    if (!accessors_.empty()) root["accessors"] = std::move(accessors_);
-    if (!bufferViews_.empty()) root["bufferViews"] = std::move(bufferViews_);
-    if (!bin_.empty()) root["buffers"] = Json::array({Json{{"byteLength", bin_.size()}}});
-
-    std::string json = root.dump();
-    json.resize((json.size() + 3) & ~std::size_t{3}, ' ');
-    const std::size_t total = 12 + 8 + json.size() + (bin_.empty() ? 0 : 8 + bin_.size());
-    if (total > 0xFFFFFFFFu) throw Error(context_ + ": scene is too large for a GLB (> 4 GiB)");
-
+    // Header and JSON chunk header first (lengths filled in below), the JSON text, then BIN.
     std::string out;
-    out.reserve(total);
-    auto put32 = [&out](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-    put32(kGlbMagic);
-    put32(2);
-    put32(static_cast<std::uint32_t>(total));
-    put32(static_cast<std::uint32_t>(json.size()));
-    put32(kChunkJson);
-    out += json;
+    out.reserve(20 + 256 + bufferViewsText_.size() + accessorsText_.size() + materialsText_.size() +
+                meshesText_.size() + nodesText_.size() + skinsText_.size() +
+                scene_.extrasJson.size() + 8 * roots_.size() + scene_.generator.size() + 3 + 8 +
+                bin_.size());
+    out.resize(20);
+    writeDocument(out);
+    out.resize((out.size() + 3) & ~std::size_t{3}, ' ');
+    const std::size_t jsonBytes = out.size() - 20;
+    const std::size_t total = out.size() + (bin_.empty() ? 0 : 8 + bin_.size());
+    if (total > 0xFFFFFFFFu) throw Error(context_ + ": scene is too large for a GLB (> 4 GiB)");
+    const std::uint32_t header[5] = {kGlbMagic, 2, static_cast<std::uint32_t>(total),
+                                     static_cast<std::uint32_t>(jsonBytes), kChunkJson};
+    std::memcpy(out.data(), header, sizeof header);
     if (!bin_.empty()) {
-        put32(static_cast<std::uint32_t>(bin_.size()));
-        put32(kChunkBin);
+        const std::uint32_t binHeader[2] = {static_cast<std::uint32_t>(bin_.size()), kChunkBin};
+        out.append(reinterpret_cast<const char*>(binHeader), sizeof binHeader);
         out += bin_;
     }
     return out;

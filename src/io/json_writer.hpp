@@ -1,0 +1,90 @@
+// A streaming JSON writer (RFC 8259) that appends compact JSON to one std::string, and a
+// validating scanner that copies a JSON text compactly (for extras strings embedded verbatim).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace ramus::io {
+
+/// Appends `text` as a JSON string literal: quotes, `"` and `\` escaped, control characters
+/// as \b \f \n \r \t or \u00XX, everything else (UTF-8 included) copied. Returns false (out
+/// unchanged) when `text` is not valid UTF-8 (overlong forms, surrogates and code points above
+/// U+10FFFF are invalid).
+bool appendJsonString(std::string& out, std::string_view text);
+
+/// Appends the shortest decimal text that reads back as the same float (std::to_chars), e.g.
+/// "0.1", "-2", "1e-08". Precondition: finite.
+void appendJsonNumber(std::string& out, float value);
+/// The same for doubles. Precondition: finite.
+void appendJsonNumber(std::string& out, double value);
+
+/// Checks that `text` is one JSON value (RFC 8259: objects, arrays, strings with valid escapes
+/// and UTF-8, numbers, true/false/null, surrounded by optional whitespace, nested at most 256
+/// deep) and appends it without the insignificant whitespace; the characters of strings and
+/// numbers are copied as they are. Returns an empty string on success, else (out unchanged) a
+/// message "byte N: expected X, got Y" (N counted from 0). Duplicate object keys are not
+/// detected.
+std::string appendCompactJson(std::string& out, std::string_view text);
+
+/// Streams one JSON document into a string, inserting commas: call key() before each member
+/// of an object, then exactly one value (a scalar or a begin…end pair). The caller keeps the
+/// nesting balanced.
+class JsonWriter {
+public:
+    /// Appends to `out` (not cleared; kept by reference).
+    explicit JsonWriter(std::string& out) : out_(out) {}
+
+    void beginObject() { open('{'); }
+    void endObject() { close('}'); }
+    void beginArray() { open('['); }
+    void endArray() { close(']'); }
+
+    /// `"name":`; `name` must not need escaping (a fixed ASCII identifier).
+    void key(std::string_view name);
+
+    /// A string value; throws Error "… is not valid UTF-8" for invalid UTF-8.
+    void value(std::string_view text);
+    void value(const char* text) { value(std::string_view(text)); }
+    void value(bool flag);
+    void value(int number) { value(static_cast<std::int64_t>(number)); }
+    void value(std::int64_t number);
+    void value(std::uint64_t number);
+    /// Shortest round-trip text (appendJsonNumber). Precondition: finite.
+    void value(float number);
+    void value(double number);
+    /// An array of `count` numbers.
+    template <typename T>
+    void numbers(const T* values, std::size_t count) {
+        beginArray();
+        for (std::size_t i = 0; i < count; ++i) value(values[i]);
+        endArray();
+    }
+    /// A value that is already compact, valid JSON, copied as is.
+    void rawValue(std::string_view json);
+    /// Validates `json` and writes it compactly (appendCompactJson); returns its error message
+    /// (empty on success; on failure the document is left incomplete).
+    std::string jsonValue(std::string_view json);
+
+private:
+    void separate() {
+        if (needComma_) out_ += ',';
+        needComma_ = true;
+    }
+    void open(char bracket) {
+        separate();
+        out_ += bracket;
+        needComma_ = false;
+    }
+    void close(char bracket) {
+        out_ += bracket;
+        needComma_ = true;
+    }
+
+    std::string& out_;
+    bool needComma_ = false;
+};
+
+}  // namespace ramus::io
