@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "ramus/error.hpp"
+#include "skeleton/number_text.hpp"
 
 namespace ramus {
 
@@ -30,31 +31,59 @@ struct BoxVertices {
     std::array<Vec3f, kBoxVertices> normals;
 };
 
-bool makeBox(const Vec3& extents, BoxVertices& box) {
-    if (!(extents.minCoeff() > 0.0) || !std::isfinite(extents.maxCoeff())) return false;
-    const Vec3f lo(0.0f, static_cast<float>(-extents.y() / 2),
-                   static_cast<float>(-extents.z() / 2));
-    const Vec3f hi(static_cast<float>(extents.x()), static_cast<float>(extents.y() / 2),
-                   static_cast<float>(extents.z() / 2));
+// Per box vertex: the face axis, the face sign and the corners' (u, w) choice of hi (1) or
+// lo (0), where (u, w, axis) is right-handed; CCW seen from +axis, reversed for the −axis face.
+struct BoxCorner {
+    int axis, sign, hiU, hiW;
+};
+constexpr std::array<BoxCorner, kBoxVertices> boxCorners() {
+    std::array<BoxCorner, kBoxVertices> corners{};
+    constexpr int order[2][4][2] = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+                                    {{0, 0}, {0, 1}, {1, 1}, {1, 0}}};
     int v = 0;
     for (int axis = 0; axis < 3; ++axis) {
-        const int u = (axis + 1) % 3, w = (axis + 2) % 3;  // (u, w, axis) is right-handed
         for (int sign : {1, -1}) {
-            Vec3f n = Vec3f::Zero();
-            n[axis] = static_cast<float>(sign);
-            // Corners (u, w) in CCW order seen from +axis; reversed for the −axis face.
-            const int order[2][4][2] = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}},
-                                        {{0, 0}, {0, 1}, {1, 1}, {1, 0}}};
-            for (const auto& c : order[sign > 0 ? 0 : 1]) {
-                Vec3f p;
-                p[axis] = sign > 0 ? hi[axis] : lo[axis];
-                p[u] = c[0] ? hi[u] : lo[u];
-                p[w] = c[1] ? hi[w] : lo[w];
-                box.positions[v] = p;
-                box.normals[v] = n;
-                ++v;
-            }
+            for (const auto& c : order[sign > 0 ? 0 : 1]) corners[v++] = {axis, sign, c[0], c[1]};
         }
+    }
+    return corners;
+}
+constexpr std::array<BoxCorner, kBoxVertices> kBoxCorners = boxCorners();
+
+// Per box vertex: its corner, bit k set where the vertex is at the box's hi end along axis k.
+constexpr std::array<int, kBoxVertices> boxCornerOf() {
+    std::array<int, kBoxVertices> corner{};
+    for (int v = 0; v < kBoxVertices; ++v) {
+        const BoxCorner& c = kBoxCorners[v];
+        const int u = (c.axis + 1) % 3, w = (c.axis + 2) % 3;
+        corner[v] = (c.sign > 0 ? 1 << c.axis : 0) | (c.hiU << u) | (c.hiW << w);
+    }
+    return corner;
+}
+constexpr std::array<int, kBoxVertices> kBoxCornerOf = boxCornerOf();
+
+// The box's lowest and highest corner; false for boxes without volume.
+bool boxBounds(const Vec3& extents, Vec3f& lo, Vec3f& hi) {
+    if (!(extents.minCoeff() > 0.0) || !std::isfinite(extents.maxCoeff())) return false;
+    lo = Vec3f(0.0f, static_cast<float>(-extents.y() / 2), static_cast<float>(-extents.z() / 2));
+    hi = Vec3f(static_cast<float>(extents.x()), static_cast<float>(extents.y() / 2),
+               static_cast<float>(extents.z() / 2));
+    return true;
+}
+
+bool makeBox(const Vec3& extents, BoxVertices& box) {
+    Vec3f lo, hi;
+    if (!boxBounds(extents, lo, hi)) return false;
+    for (int v = 0; v < kBoxVertices; ++v) {
+        const BoxCorner& c = kBoxCorners[v];
+        const int u = (c.axis + 1) % 3, w = (c.axis + 2) % 3;
+        Vec3f p;
+        p[c.axis] = c.sign > 0 ? hi[c.axis] : lo[c.axis];
+        p[u] = c.hiU ? hi[u] : lo[u];
+        p[w] = c.hiW ? hi[w] : lo[w];
+        box.positions[v] = p;
+        box.normals[v] = Vec3f::Zero();
+        box.normals[v][c.axis] = static_cast<float>(c.sign);
     }
     return true;
 }
@@ -72,12 +101,8 @@ constexpr std::array<std::uint32_t, kBoxIndices> kBoxIndexPattern = boxIndices()
 
 // ---- extras JSON -----------------------------------------------------------------------------
 
-void appendNumber(std::string& out, double value) {
-    char buffer[32];
-    const double clean = value == 0.0 ? 0.0 : value;  // no "-0"
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, clean);
-    out.append(buffer, result.ptr);
-}
+// Shortest round-trip text; −0 is written as 0.
+void appendNumber(std::string& out, double value) { detail::appendShortest(out, value); }
 
 void appendVector(std::string& out, const double* v, int n) {
     out += '[';
@@ -135,12 +160,16 @@ void appendJoint(std::string& out, const Bone& bone) {
 }
 
 std::string boneExtras(const Bone& bone, double metresPerPixel) {
-    std::string out = "{";
+    std::string out;
+    out.reserve(448);
+    out += '{';
     appendField(out, "kind", boneKindName(bone.kind));
     appendField(out, "side", sideName(bone.side));
     if (bone.region != SpineRegion::None) appendField(out, "region", spineRegionName(bone.region));
     if (bone.index > 0) {
-        out += "\"index\":" + std::to_string(bone.index) + ",";
+        out += "\"index\":";
+        appendNumber(out, bone.index);
+        out += ',';
     }
     if (bone.limb != LimbKind::None) {
         appendField(out, "limb", limbKindName(bone.limb));
@@ -168,14 +197,19 @@ std::string sceneExtras(const Skeleton& skeleton) {
 // ---- nodes and skin --------------------------------------------------------------------------
 
 // Joint node i for bone i: rigid local transforms, extras; world matrices → inverse binds.
-void addJointNodes(const Skeleton& skeleton, Scene& scene) {
+// local[i] = bones[i].joint.transform().
+void addJointNodes(const Skeleton& skeleton, const std::vector<Mat4>& local, Scene& scene) {
     const double s = skeleton.metresPerPixel;
     const Mat4 toGltf = skeletonToGltf(skeleton);
+    const std::size_t n = skeleton.bones.size();
     Skin skin;
-    std::vector<Mat4> world(skeleton.bones.size());
-    for (std::size_t i = 0; i < skeleton.bones.size(); ++i) {
+    skin.joints.reserve(n);
+    skin.inverseBindMatrices.reserve(n);
+    scene.nodes.reserve(n + 1);
+    std::vector<Mat4> world(n);
+    for (std::size_t i = 0; i < n; ++i) {
         const Bone& bone = skeleton.bones[i];
-        const Mat4 joint = bone.joint.transform();
+        const Mat4& joint = local[i];
         SceneNode node;
         node.name = bone.name();
         node.parent = bone.parent;
@@ -206,10 +240,19 @@ void addJointNodes(const Skeleton& skeleton, Scene& scene) {
 // Collects the bind-pose vertices of every bone and its triangles per bone kind.
 class SkeletonMeshBuilder {
 public:
-    explicit SkeletonMeshBuilder(const Skeleton& skeleton)
-        : toGltf_(skeletonToGltf(skeleton)), world_(skeleton.worldTransforms()) {}
+    // world: Skeleton::worldTransforms(); vertexHint, indexHint: expected totals (reserved).
+    SkeletonMeshBuilder(const Skeleton& skeleton, std::vector<Mat4> world, std::size_t vertexHint,
+                        const std::array<std::size_t, kBoneKindCount>& indexHint)
+        : toGltf_(skeletonToGltf(skeleton)), world_(std::move(world)) {
+        mesh_.positions.reserve(vertexHint);
+        mesh_.normals.reserve(vertexHint);
+        mesh_.joints.reserve(vertexHint);
+        mesh_.weights.reserve(vertexHint);
+        for (int k = 0; k < kBoneKindCount; ++k) kindIndices_[k].reserve(indexHint[k]);
+    }
 
-    void addBox(std::size_t bone, BoneKind kind, const BoxVertices& box);
+    /// boneBoxMesh's box of `bone` (nothing for boxes without volume).
+    void addBox(std::size_t bone, BoneKind kind, const Vec3& extents);
     void addMesh(std::size_t bone, BoneKind kind, const Mesh& mesh);
     Mesh finish(const SkeletonSceneParams& params);
 
@@ -245,11 +288,39 @@ std::uint32_t SkeletonMeshBuilder::addVertices(std::size_t bone, const Vec3f* po
     return base;
 }
 
-void SkeletonMeshBuilder::addBox(std::size_t bone, BoneKind kind, const BoxVertices& box) {
-    const std::uint32_t base =
-        addVertices(bone, box.positions.data(), box.normals.data(), kBoxVertices);
+// The same vertices as addVertices(makeBox(extents)), from the box's 8 transformed corners
+// and 6 turned face normals.
+void SkeletonMeshBuilder::addBox(std::size_t bone, BoneKind kind, const Vec3& extents) {
+    Vec3f lo, hi;
+    if (!boxBounds(extents, lo, hi)) return;
+    const Mat4 m = toGltf_ * world_[bone];
+    const Mat3 linear = m.topLeftCorner<3, 3>();
+    const Mat3 rotation = linear / linear.col(0).norm();
+    std::array<Vec3f, 8> corners;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3f p((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(),
+                      (c & 4) ? hi.z() : lo.z());
+        corners[c] = (linear * p.cast<double>() + m.topRightCorner<3, 1>()).cast<float>();
+    }
+    std::array<Vec3f, 6> faceNormals;
+    for (int f = 0; f < 6; ++f) {
+        Vec3 n = Vec3::Zero();
+        n[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
+        faceNormals[f] = (rotation * n).cast<float>();
+    }
+    const std::size_t base = mesh_.positions.size();
+    const auto joint = static_cast<std::uint16_t>(bone);
+    mesh_.positions.resize(base + kBoxVertices);
+    mesh_.normals.resize(base + kBoxVertices);
+    mesh_.joints.resize(base + kBoxVertices, {joint, 0, 0, 0});
+    mesh_.weights.resize(base + kBoxVertices, Vec4f(1.0f, 0.0f, 0.0f, 0.0f));
+    for (int v = 0; v < kBoxVertices; ++v) {
+        mesh_.positions[base + v] = corners[kBoxCornerOf[v]];
+        mesh_.normals[base + v] = faceNormals[v / 4];
+    }
     std::vector<std::uint32_t>& indices = kindIndices_[static_cast<int>(kind)];
-    for (std::uint32_t i : kBoxIndexPattern) indices.push_back(base + i);
+    for (std::uint32_t i : kBoxIndexPattern)
+        indices.push_back(static_cast<std::uint32_t>(base) + i);
 }
 
 void SkeletonMeshBuilder::addMesh(std::size_t bone, BoneKind kind, const Mesh& mesh) {
@@ -281,6 +352,9 @@ void SkeletonMeshBuilder::addMesh(std::size_t bone, BoneKind kind, const Mesh& m
 // Index buffer in BoneKind order, one primitive and material per kind present.
 Mesh SkeletonMeshBuilder::finish(const SkeletonSceneParams& params) {
     mesh_.name = params.meshName;
+    std::size_t indexCount = 0;
+    for (const std::vector<std::uint32_t>& indices : kindIndices_) indexCount += indices.size();
+    mesh_.indices.reserve(indexCount);
     for (int k = 0; k < kBoneKindCount; ++k) {
         const std::vector<std::uint32_t>& indices = kindIndices_[k];
         if (indices.empty()) continue;
@@ -333,14 +407,24 @@ Scene skeletonToScene(const Skeleton& skeleton, const SkeletonSceneParams& param
     Scene scene;
     if (skeleton.bones.empty()) return scene;
     RAMUS_ASSERT(skeleton.bones.size() <= 65536);  // joint indices are 16-bit
-    addJointNodes(skeleton, scene);
-    SkeletonMeshBuilder builder(skeleton);
-    for (std::size_t i = 0; i < skeleton.bones.size(); ++i) {
+    const std::size_t n = skeleton.bones.size();
+    std::vector<Mat4> local(n), world(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const int parent = skeleton.bones[i].parent;
+        local[i] = skeleton.bones[i].joint.transform();
+        world[i] = parent < 0 ? local[i] : Mat4(world[static_cast<std::size_t>(parent)] * local[i]);
+    }
+    addJointNodes(skeleton, local, scene);
+    // Space for a box per bone (exact for boxes, a first guess for bone meshes).
+    std::array<std::size_t, kBoneKindCount> indexHint{};
+    for (const Bone& bone : skeleton.bones) indexHint[static_cast<int>(bone.kind)] += kBoxIndices;
+    SkeletonMeshBuilder builder(skeleton, std::move(world), n * kBoxVertices, indexHint);
+    for (std::size_t i = 0; i < n; ++i) {
         const Bone& bone = skeleton.bones[i];
         if (params.boneMesh) {
             builder.addMesh(i, bone.kind, params.boneMesh(bone));
-        } else if (BoxVertices box; makeBox(bone.extents, box)) {
-            builder.addBox(i, bone.kind, box);
+        } else {
+            builder.addBox(i, bone.kind, bone.extents);
         }
     }
     Mesh mesh = builder.finish(params);
