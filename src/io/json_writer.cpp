@@ -2,6 +2,7 @@
 // grammar, string escapes, number syntax, UTF-8; RFC 3629 §4 (valid UTF-8 byte sequences).
 #include "io/json_writer.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -53,16 +54,18 @@ struct ScanError {
 };
 
 // Validates one JSON value (recursive descent, depth-limited); remembers whether any
-// whitespace outside strings was skipped.
+// whitespace outside strings was skipped. Reads the text's terminating NUL instead of checking
+// bounds: no JSON token continues over a NUL, so scanning stops there (and reports it as an
+// error when it is not the end).
 class JsonScanner {
 public:
-    explicit JsonScanner(std::string_view text) : s_(text) {}
+    explicit JsonScanner(const std::string& text) : s_(text.c_str()), size_(text.size()) {}
 
     bool scanDocument() {
         skipSpace();
         scanValue(0);
         skipSpace();
-        if (i_ != s_.size()) fail("the end of the text");
+        if (i_ != size_) fail("the end of the text");
         return hadSpace_;
     }
 
@@ -70,18 +73,20 @@ private:
     static constexpr int kMaxDepth = 256;
 
     [[noreturn]] void fail(const char* expected) const { throw ScanError{i_, expected}; }
-    char peek() const { return i_ < s_.size() ? s_[i_] : '\0'; }
+    char peek() const { return s_[i_]; }
     void expect(char c, const char* what) {
         if (peek() != c) fail(what);
         ++i_;
     }
     void skipSpace() {
         const std::size_t start = i_;
-        while (i_ < s_.size() && isSpace(s_[i_])) ++i_;
+        while (isSpace(s_[i_])) ++i_;
         hadSpace_ = hadSpace_ || i_ != start;
     }
     void scanLiteral(std::string_view word) {
-        if (s_.substr(i_, word.size()) != word) fail("a JSON value");
+        if (std::string_view(s_ + i_, std::min(word.size(), size_ - i_)) != word) {
+            fail("a JSON value");
+        }
         i_ += word.size();
     }
 
@@ -95,7 +100,8 @@ private:
         while (isDigit(peek())) ++i_;
     }
 
-    std::string_view s_;
+    const char* s_;  // NUL-terminated
+    std::size_t size_;
     std::size_t i_ = 0;
     bool hadSpace_ = false;
 };
@@ -162,8 +168,8 @@ unsigned JsonScanner::scanEscapedUnit() {
 void JsonScanner::scanString() {
     ++i_;  // opening quote
     for (;;) {
-        while (i_ < s_.size() && plainAscii(static_cast<unsigned char>(s_[i_]))) ++i_;
-        if (i_ >= s_.size()) fail("'\"' (end of the string)");
+        while (plainAscii(static_cast<unsigned char>(s_[i_]))) ++i_;
+        if (i_ >= size_) fail("'\"' (end of the string)");
         const auto c = static_cast<unsigned char>(s_[i_]);
         if (c == '"') {
             ++i_;
@@ -171,7 +177,7 @@ void JsonScanner::scanString() {
         }
         if (c < 0x20) fail("an escaped control character");
         if (c >= 0x80) {
-            const std::size_t n = utf8Length(s_, i_);
+            const std::size_t n = utf8Length({s_, size_}, i_);
             if (n == 0) fail("valid UTF-8");
             i_ += n;
             continue;
@@ -183,7 +189,7 @@ void JsonScanner::scanString() {
             const unsigned unit = scanEscapedUnit();
             if (unit >= 0xDC00 && unit <= 0xDFFF) fail("no lone low surrogate");
             if (unit >= 0xD800 && unit <= 0xDBFF) {
-                if (peek() != '\\' || i_ + 1 >= s_.size() || s_[i_ + 1] != 'u') {
+                if (peek() != '\\' || s_[i_ + 1] != 'u') {
                     fail("a low surrogate \\uDC00…\\uDFFF");
                 }
                 i_ += 2;
@@ -313,7 +319,7 @@ void appendJsonNumber(std::string& out, double value) {
     out.append(buffer, result.ptr);
 }
 
-std::string appendCompactJson(std::string& out, std::string_view text) {
+std::string appendCompactJson(std::string& out, const std::string& text) {
     try {
         if (JsonScanner(text).scanDocument()) {
             appendWithoutSpace(out, text);
@@ -369,7 +375,7 @@ void JsonWriter::value(double number) {
     appendJsonNumber(out_, number);
 }
 
-std::string JsonWriter::jsonValue(std::string_view json) {
+std::string JsonWriter::jsonValue(const std::string& json) {
     separate();
     return appendCompactJson(out_, json);
 }

@@ -27,7 +27,7 @@ void appendJsonNumber(std::string& out, double value);
 /// numbers are copied as they are. Returns an empty string on success, else (out unchanged) a
 /// message "byte N: expected X, got Y" (N counted from 0). Duplicate object keys are not
 /// detected.
-std::string appendCompactJson(std::string& out, std::string_view text);
+std::string appendCompactJson(std::string& out, const std::string& text);
 
 /// Streams one JSON document into a string, inserting commas: call key() before each member
 /// of an object, then exactly one value (a scalar or a begin…end pair). The caller keeps the
@@ -66,7 +66,7 @@ public:
     void rawValue(std::string_view json);
     /// Validates `json` and writes it compactly (appendCompactJson); returns its error message
     /// (empty on success; on failure the document is left incomplete).
-    std::string jsonValue(std::string_view json);
+    std::string jsonValue(const std::string& json);
 
 private:
     void separate() {
