@@ -26,8 +26,9 @@ namespace ramus {
 /// outside, the frame right-handed for left, right and center bones alike. Normals, tangents and
 /// uvs are optional (the skeleton mesh keeps an attribute only if every non-empty bone mesh has
 /// it); the mesh's materials, primitives, joints and weights are ignored. An empty mesh draws
-/// nothing for that bone. The bone-model library plugs its scaled models in here.
-using BoneMeshSource = std::function<Mesh(const Bone& bone)>;
+/// nothing for that bone. The bone-model library plugs its scaled models in here (bones.hpp).
+/// `boneIndex` is the bone's index in Skeleton::bones.
+using BoneMeshSource = std::function<Mesh(int boneIndex, const Bone& bone)>;
 
 /// The bone's box: x ∈ [0, extents.x], y ∈ ±extents.y/2, z ∈ ±extents.z/2 (px, bone frame).
 /// 24 vertices (4 per face, flat unit normals), 12 counter-clockwise triangles seen from

@@ -422,7 +422,7 @@ Scene skeletonToScene(const Skeleton& skeleton, const SkeletonSceneParams& param
     for (std::size_t i = 0; i < n; ++i) {
         const Bone& bone = skeleton.bones[i];
         if (params.boneMesh) {
-            builder.addMesh(i, bone.kind, params.boneMesh(bone));
+            builder.addMesh(i, bone.kind, params.boneMesh(static_cast<int>(i), bone));
         } else {
             builder.addBox(i, bone.kind, bone.extents);
         }

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/enum_names.hpp"
 #include "ramus/skeleton.hpp"
 
 namespace ramus {
 namespace {
+
+using detail::nameOf;
+using detail::parseName;
 
 constexpr std::array<std::string_view, kBoneKindCount> kBoneKindNames = {
     "root",    "vertebra", "rib",    "skull", "scapula", "upper_arm",
@@ -18,19 +22,6 @@ constexpr std::array<std::string_view, kAttachmentCount> kAttachmentNames = {
     "hip", "shoulder", "hip2", "shoulder2", "neck", "neck2"};
 constexpr std::array<std::string_view, 3> kNeckShoulderNames = {"allowed", "forced", "forbidden"};
 constexpr std::array<std::string_view, 2> kSpacingNames = {"arc_length", "parameter"};
-
-template <typename Enum, std::size_t N>
-std::optional<Enum> parseName(const std::array<std::string_view, N>& names, std::string_view name) {
-    for (std::size_t i = 0; i < N; ++i) {
-        if (names[i] == name) return static_cast<Enum>(i);
-    }
-    return std::nullopt;
-}
-
-template <std::size_t N, typename Enum>
-std::string_view nameOf(const std::array<std::string_view, N>& names, Enum value) {
-    return names[static_cast<std::size_t>(value)];
-}
 
 Mat3 rotationAbout(const Vec3& axis, double degrees) {
     return Eigen::AngleAxisd(degToRad(degrees), axis.normalized()).toRotationMatrix();

@@ -474,7 +474,7 @@ TEST(SkeletonScene, CustomBoneMeshSourceReplacesTheBoxes) {
     const Skeleton s = makeSkeleton();
     SkeletonSceneParams params;
     // A tetrahedron along the bone (no normals), none for vertebrae.
-    params.boneMesh = [](const Bone& bone) {
+    params.boneMesh = [](int, const Bone& bone) {
         Mesh m;
         if (bone.kind == BoneKind::Vertebra || bone.kind == BoneKind::Root) return m;
         const float l = static_cast<float>(bone.extents.x());
