@@ -109,9 +109,10 @@ int boneTriangleBudget(BoneModelKind kind, BoneResolution resolution);
 /// Cheap to copy (models are shared and immutable).
 class BoneLibrary {
 public:
-    /// The default library, built procedurally on first use per resolution (thread-safe) and
-    /// kept for the life of the process.
-    static const BoneLibrary& builtin();
+    /// The default library at a resolution (Low or High): every model kind, built
+    /// procedurally on the first call per resolution (thread-safe) and kept for the life of the
+    /// process. The returned library holds only that resolution's models.
+    static const BoneLibrary& builtin(BoneResolution resolution);
 
     /// The model of a kind at a resolution (Low or High). Throws Error for Box (no models) or
     /// when the library lacks the model (naming the kind and the resolution).
@@ -122,10 +123,7 @@ public:
     void set(BoneModelKind kind, BoneResolution resolution, BoneModel model);
 
 private:
-    friend struct BoneLibraryAccess;
     std::array<std::array<std::shared_ptr<const BoneModel>, 2>, kBoneModelKindCount> models_{};
-    /// Builds missing default models on demand (builtin() only).
-    std::shared_ptr<void> lazyBuilder_;
 };
 
 /// Loads a user library: `directory`/bones.json (docs/bones.md) names per model kind and
