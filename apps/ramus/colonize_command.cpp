@@ -1,6 +1,5 @@
 // `ramus colonize CONFIG.json …`: sample the envelopes, grow by space colonization, mesh,
 // write (docs/colonize.md).
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -29,10 +28,6 @@ struct ColonizeOptions {
     TubeMeshParams mesh;  // flags; applied over the config's "mesh" object when given
     CLI::App* command = nullptr;
 };
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::uint64_t parseSeed(const std::string& text) {
     std::size_t used = 0;
@@ -94,24 +89,23 @@ void run(ColonizeOptions& o) {
         std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());
     }
 
-    auto start = std::chrono::steady_clock::now();
+    StageTimer timer;
     std::vector<Vec3> points = configAttractionPoints(config);
     if (!o.points.empty()) {
         const std::vector<Vec3> extra =
             removePointsInside(readPointsFile(o.points), config.obstacles);
         points.insert(points.end(), extra.begin(), extra.end());
     }
-    const double sampleSeconds = secondsSince(start);
+    timer.lap("sample");
 
-    start = std::chrono::steady_clock::now();
     const ColonizeResult result = growFromConfig(config, points);
-    const double growSeconds = secondsSince(start);
+    timer.lap("grow");
     for (const std::string& w : result.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
-    start = std::chrono::steady_clock::now();
+    timer.restart();
     Mesh model;
     for (const BranchTree& tree : result.trees) appendMesh(model, buildTubeMesh(tree, mesh));
-    const double meshSeconds = secondsSince(start);
+    timer.lap("mesh");
 
     TreeOutputs outputs = o.outputs;
     outputs.treeJson.clear();  // written below, for all trees
@@ -126,12 +120,7 @@ void run(ColonizeOptions& o) {
         stats["attractors_left"] = result.attractorsLeft;
         stats["iterations"] = result.iterations;
         stats["nodes"] = result.nodeCount();
-        stats["vertices"] = model.vertexCount();
-        stats["triangles"] = model.triangleCount();
-        stats["sample_seconds"] = sampleSeconds;
-        stats["grow_seconds"] = growSeconds;
-        stats["mesh_seconds"] = meshSeconds;
-        std::printf("%s\n", stats.dump().c_str());
+        printTreeStats(std::move(stats), model, timer);
     }
 }
 

@@ -1,5 +1,4 @@
 // `ramus lsystem FILE.lsys …`: derive, interpret, mesh, write.
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -29,10 +28,6 @@ struct LsystemOptions {
     TreeOutputs outputs;
     TubeMeshParams mesh;
 };
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // "NAME=VALUE" → pair; the value must be a plain number.
 std::pair<std::string, double> parseSetting(const std::string& text) {
@@ -86,21 +81,20 @@ void run(LsystemOptions& o) {
         std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());
     }
 
-    auto start = std::chrono::steady_clock::now();
+    StageTimer timer;
     const ModuleString word = deriveLSystem(system, deriveOptions);
-    const double deriveSeconds = secondsSince(start);
+    timer.lap("derive");
     if (o.print) std::printf("%s\n", formatModules(system.symbols, word).c_str());
 
-    start = std::chrono::steady_clock::now();
+    timer.restart();
     const TurtleResult shape = interpretTurtle(word, system.symbols, turtle);
-    const double interpretSeconds = secondsSince(start);
+    timer.lap("interpret");
 
-    start = std::chrono::steady_clock::now();
     Mesh mesh = buildTubeMesh(shape.tree, o.mesh);
     if (shape.polygonCount() > 0) {
         appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
     }
-    const double meshSeconds = secondsSince(start);
+    timer.lap("mesh");
 
     writeTreeOutputs(o.outputs, shape.tree, mesh, o.mesh);
     if (o.stats) {
@@ -109,12 +103,7 @@ void run(LsystemOptions& o) {
         stats["nodes"] = shape.tree.size();
         stats["edges"] = shape.tree.edgeCount();
         stats["polygons"] = shape.polygonCount();
-        stats["vertices"] = mesh.vertexCount();
-        stats["triangles"] = mesh.triangleCount();
-        stats["derive_seconds"] = deriveSeconds;
-        stats["interpret_seconds"] = interpretSeconds;
-        stats["mesh_seconds"] = meshSeconds;
-        std::printf("%s\n", stats.dump().c_str());
+        printTreeStats(std::move(stats), mesh, timer);
     }
 }
 

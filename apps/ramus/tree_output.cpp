@@ -74,4 +74,17 @@ void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const 
     if (!outputs.png.empty()) writePng(renderScene(scene, render), outputs.png);
 }
 
+void StageTimer::lap(std::string name) {
+    const auto now = std::chrono::steady_clock::now();
+    stages_.emplace_back(std::move(name), std::chrono::duration<double>(now - start_).count());
+    start_ = now;
+}
+
+void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const StageTimer& timer) {
+    counts["vertices"] = mesh.vertexCount();
+    counts["triangles"] = mesh.triangleCount();
+    for (const auto& [name, seconds] : timer.stages()) counts[name + "_seconds"] = seconds;
+    std::printf("%s\n", counts.dump().c_str());
+}
+
 }  // namespace ramus::cli

@@ -3,7 +3,11 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <chrono>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ramus/branch_tree.hpp"
 #include "ramus/mesh.hpp"
@@ -31,5 +35,24 @@ void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params);
 /// Writes every requested output for `tree` and its already built `mesh`.
 void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const Mesh& mesh,
                       const TubeMeshParams& meshParams);
+
+/// Wall-clock seconds of a command's stages, in order, for --stats.
+class StageTimer {
+public:
+    /// Starts timing the next stage now (what ran since the last lap is not counted).
+    void restart() { start_ = std::chrono::steady_clock::now(); }
+    /// Ends the stage that started at the last restart or lap, recording it as `name`.
+    void lap(std::string name);
+    /// The recorded stages: name and seconds, in order.
+    const std::vector<std::pair<std::string, double>>& stages() const { return stages_; }
+
+private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    std::vector<std::pair<std::string, double>> stages_;
+};
+
+/// Prints --stats as one JSON line: `counts` (in their order), the mesh's "vertices" and
+/// "triangles", then "<stage>_seconds" for every stage of `timer`.
+void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const StageTimer& timer);
 
 }  // namespace ramus::cli
