@@ -9,6 +9,12 @@ if(RAMUS_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
 
+# cpp-httplib (the studio server): Debian builds it as a library; its pkg-config flags select
+# the same TLS/compression options the library was built with.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
+find_package(Threads REQUIRED)
+
 # stb (header-only, Debian libstb-dev puts headers in /usr/include/stb)
 find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb REQUIRED)
 add_library(ramus_stb INTERFACE)

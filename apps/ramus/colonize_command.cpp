@@ -44,14 +44,9 @@ std::uint64_t parseSeed(const std::string& text) {
 }
 
 // Mesher settings: defaults, then the config's "mesh" object, then the flags given.
-TubeMeshParams meshParams(const ColonizeOptions& o, const ColonizeConfig::MeshOverrides& m) {
+TubeMeshParams meshParams(const ColonizeOptions& o, const ColonizeConfig& config) {
     TubeMeshParams p;
-    if (m.hasLeafRadius) p.leafRadius = m.leafRadius;
-    if (m.hasRadiusExponent) p.radiusExponent = m.radiusExponent;
-    if (m.hasTrunkMultiplier) p.trunkMultiplier = m.trunkMultiplier;
-    if (m.hasMinSegments) p.minSegments = m.minSegments;
-    if (m.hasMaxSegments) p.maxSegments = m.maxSegments;
-    if (m.hasCapTips) p.capTips = m.capTips;
+    applyMeshOverrides(config, p);
     const CLI::App& c = *o.command;
     if (c.count("--leaf-radius")) p.leafRadius = o.mesh.leafRadius;
     if (c.count("--radius-exponent")) p.radiusExponent = o.mesh.radiusExponent;
@@ -83,7 +78,7 @@ std::string encodeForest(const std::vector<BranchTree>& trees, const TubeMeshPar
 void run(ColonizeOptions& o) {
     ColonizeConfig config = loadColonizeConfig(o.config);
     if (!o.seed.empty()) config.seed = parseSeed(o.seed.front());
-    const TubeMeshParams mesh = meshParams(o, config.mesh);
+    const TubeMeshParams mesh = meshParams(o, config);
     if (!o.stats && !o.outputs.any()) {
         o.outputs.model = std::filesystem::path(o.config).stem().string() + ".glb";
         std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());

@@ -80,10 +80,14 @@ void StageTimer::lap(std::string name) {
     start_ = now;
 }
 
+void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer) {
+    for (const auto& [name, seconds] : timer.stages()) stats[name + "_seconds"] = seconds;
+}
+
 void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const StageTimer& timer) {
     counts["vertices"] = mesh.vertexCount();
     counts["triangles"] = mesh.triangleCount();
-    for (const auto& [name, seconds] : timer.stages()) counts[name + "_seconds"] = seconds;
+    addStageSeconds(counts, timer);
     std::printf("%s\n", counts.dump().c_str());
 }
 

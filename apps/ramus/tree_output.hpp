@@ -51,6 +51,9 @@ private:
     std::vector<std::pair<std::string, double>> stages_;
 };
 
+/// Adds "<stage>_seconds" for every stage of `timer` to `stats`.
+void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer);
+
 /// Prints --stats as one JSON line: `counts` (in their order), the mesh's "vertices" and
 /// "triangles", then "<stage>_seconds" for every stage of `timer`.
 void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const StageTimer& timer);

@@ -11,6 +11,7 @@
 #include "ramus/branch_tree.hpp"
 #include "ramus/envelope.hpp"
 #include "ramus/math.hpp"
+#include "ramus/tube_mesher.hpp"
 
 namespace ramus {
 
@@ -112,6 +113,9 @@ struct ColonizeConfig {
         bool capTips = true;
     } mesh;
 };
+
+/// Applies the config's "mesh" object to `params`: only the keys the config has are set.
+void applyMeshOverrides(const ColonizeConfig& config, TubeMeshParams& params);
 
 /// Parses a config from JSON text. Every value is checked; errors read
 /// "FILE: KEY.PATH: what; expected …, got …" (e.g. "tree.json: envelopes[2].radius: …").

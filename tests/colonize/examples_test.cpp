@@ -26,11 +26,7 @@ std::vector<std::string> exampleFiles() {
 
 TubeMeshParams meshParams(const ColonizeConfig& c) {
     TubeMeshParams p;
-    if (c.mesh.hasLeafRadius) p.leafRadius = c.mesh.leafRadius;
-    if (c.mesh.hasRadiusExponent) p.radiusExponent = c.mesh.radiusExponent;
-    if (c.mesh.hasTrunkMultiplier) p.trunkMultiplier = c.mesh.trunkMultiplier;
-    if (c.mesh.hasMinSegments) p.minSegments = c.mesh.minSegments;
-    if (c.mesh.hasMaxSegments) p.maxSegments = c.mesh.maxSegments;
+    applyMeshOverrides(c, p);
     return p;
 }
 
