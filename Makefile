@@ -7,8 +7,8 @@ OUT       ?= out
 CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
-.PHONY: all deps build run showcase test check-tests validate format format-check \
-        bench bench-peers fuzz fuzz-smoke clean
+.PHONY: all deps build run showcase serve test check-tests studio-e2e validate format \
+        format-check bench bench-peers fuzz fuzz-smoke clean
 
 all: build
 
@@ -24,13 +24,22 @@ run: deps
 	@cmake -S . -B $(BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target ramus
 	@scripts/showcase.sh $(RAMUS) $(OUT)
+	@echo "studio: run 'make serve' and open http://127.0.0.1:$(PORT)/"
 
 showcase: run
 
+# The studio (docs/studio.md): a local web page to generate, tweak and download.
+PORT ?= 8080
+serve: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target ramus
+	$(RAMUS) serve --port $(PORT)
+
 # Everything CI checks: formatting; every unit and end-to-end test in one ASan+UBSan build with
 # internal assertions on; the Khronos glTF validator over every GLB those tests wrote; a short
-# run of each fuzzer. (Benchmarks measure speed separately: `make bench`.)
-test: deps format-check check-tests validate fuzz-smoke
+# run of each fuzzer; the studio page end to end in headless Chromium. (Benchmarks measure speed
+# separately: `make bench`.)
+test: deps format-check check-tests studio-e2e validate fuzz-smoke
 	@echo "make test: all checks passed"
 	@node scripts/gtest-summary.mjs $(CHECK)/gtest.json
 
@@ -44,7 +53,10 @@ check-tests: deps
 	  RAMUS_BIN=$(CURDIR)/$(CHECK)/ramus ./ramus_tests --gtest_brief=1 \
 	  --gtest_output=json:$(CURDIR)/$(CHECK)/gtest.json
 
-validate: check-tests
+studio-e2e: check-tests
+	@node tests/studio/e2e.mjs $(CHECK)/ramus $(CHECK)/test-output
+
+validate: check-tests studio-e2e
 	@node tests/validator/validate.mjs $(CHECK)/test-output
 
 FORMAT_FILES = $(shell git ls-files '*.cpp' '*.hpp')

@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config clang clang-format
           libeigen3-dev nlohmann-json3-dev libcli11-dev libcpp-httplib-dev libnanoflann-dev
-          libstb-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev)
+          libstb-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev
+          chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -24,7 +25,7 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # npm tools (lock files committed; `npm ci` installs exactly what they list)
-for dir in tests/validator; do
+for dir in tests/validator tests/studio web; do
   if [ -f "$dir/package-lock.json" ] && [ ! -d "$dir/node_modules" ]; then
     (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error)
   fi

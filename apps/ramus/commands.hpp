@@ -12,5 +12,6 @@ void addSpeciesCommand(CLI::App& app);
 void addPcaCommand(CLI::App& app);
 void addColonizeCommand(CLI::App& app);
 void addSkeletonCommand(CLI::App& app);
+void addServeCommand(CLI::App& app);
 
 }  // namespace ramus::cli

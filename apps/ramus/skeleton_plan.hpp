@@ -1,0 +1,41 @@
+// Which skeletons a request makes — shared by `ramus skeleton` and the studio: fresh designs,
+// a loaded design regenerated, or variations of a loaded or example design (seed 000 §6.2, §6.3).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ramus/skeleton.hpp"
+#include "ramus/skeleton_io.hpp"
+#include "ramus/skeleton_stats.hpp"
+
+namespace ramus::cli {
+
+/// What to make: `count` skeletons named `name`0, `name`1, …
+struct SkeletonPlanRequest {
+    SkeletonInputs inputs;
+    std::optional<LoadedSkeleton> loaded;  ///< a saved skeleton (metadata) to regenerate or vary
+    bool variations = false;               ///< vary the loaded (or example) skeleton
+    int count = 1;
+    std::optional<std::uint64_t> seed;  ///< default: the loaded skeleton's seed, else 1
+    std::string name = "skeleton";      ///< "skeleton" = the loaded skeleton's name when reused
+};
+
+/// One skeleton to build and save.
+struct PlannedSkeleton {
+    SkeletonDesign design;
+    std::string name;
+    std::uint64_t seed = 0;  ///< the request's seed, saved in the metadata
+};
+
+/// The designs of a request, in order. Skeleton i draws from Rng::forStream(seed, i), a
+/// variations source from the stream ~0, so any subset regenerates the same designs. A loaded
+/// skeleton without variations gives exactly it once. Throws Error for inconsistent requests
+/// (count < 1, variations without a source, a loaded skeleton with count > 1 but no
+/// variations, both a loaded skeleton and an example).
+std::vector<PlannedSkeleton> planSkeletons(const SkeletonStats& stats,
+                                           const SkeletonPlanRequest& request);
+
+}  // namespace ramus::cli

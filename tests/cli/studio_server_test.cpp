@@ -1,0 +1,267 @@
+// The studio's JSON API against a real `ramus serve` on a free loopback port (issue 7 checks):
+// good requests, malformed JSON, huge bodies, a runaway L-system, bad configs, concurrency.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli/cli_test_util.hpp"
+#include "ramus/file_util.hpp"
+#include "ramus/lsystem.hpp"
+
+// After Eigen (via ramus headers): httplib.h pulls in <resolv.h>, whose `_res` macro breaks
+// Eigen's headers.
+#include <httplib.h>
+
+extern char** environ;
+
+namespace ramus::testing {
+namespace {
+
+using nlohmann::json;
+
+/// `ramus serve --port 0` as a child process; the port comes from its first line of output.
+class StudioServer {
+public:
+    StudioServer() {
+        int fds[2];
+        if (pipe(fds) != 0) return;
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+        posix_spawn_file_actions_addclose(&actions, fds[0]);
+        const std::string bin = ramusBinary();
+        std::vector<std::string> args = {
+            bin,          "serve", "--port",  "0", "--root",        RAMUS_SOURCE_DIR,
+            "--jobs",     "2",     "--queue", "2", "--max-modules", "200000",
+            "--max-body", "100000"};
+        std::vector<char*> argv;
+        for (std::string& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        if (posix_spawn(&pid_, bin.c_str(), &actions, nullptr, argv.data(), environ) != 0) {
+            pid_ = -1;
+        }
+        posix_spawn_file_actions_destroy(&actions);
+        close(fds[1]);
+        std::string line;
+        char c = 0;
+        while (read(fds[0], &c, 1) == 1 && c != '\n') line += c;
+        close(fds[0]);
+        const std::size_t colon = line.rfind(':');
+        if (colon != std::string::npos) port_ = std::atoi(line.c_str() + colon + 1);
+    }
+    ~StudioServer() {
+        if (pid_ > 0) {
+            kill(pid_, SIGTERM);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+    int port() const { return port_; }
+    bool running() const { return pid_ > 0 && port_ > 0; }
+
+private:
+    pid_t pid_ = -1;
+    int port_ = 0;
+};
+
+StudioServer& server() {
+    static StudioServer instance;
+    return instance;
+}
+
+httplib::Client client() {
+    httplib::Client c("127.0.0.1", server().port());
+    c.set_read_timeout(60, 0);
+    return c;
+}
+
+struct Reply {
+    int status = 0;
+    json body;
+};
+
+Reply post(const std::string& path, const std::string& body) {
+    auto c = client();
+    auto res = c.Post(path.c_str(), body, "application/json");
+    if (!res) return {};
+    return {res->status, json::parse(res->body, nullptr, false)};
+}
+
+Reply post(const std::string& path, const json& body) { return post(path, body.dump()); }
+
+std::string decodeBase64(const std::string& text) {
+    auto value = [](char ch) -> int {
+        if (ch >= 'A' && ch <= 'Z') return ch - 'A';
+        if (ch >= 'a' && ch <= 'z') return ch - 'a' + 26;
+        if (ch >= '0' && ch <= '9') return ch - '0' + 52;
+        return ch == '+' ? 62 : ch == '/' ? 63 : -1;
+    };
+    std::string out;
+    int bits = 0, buffer = 0;
+    for (char ch : text) {
+        const int v = value(ch);
+        if (v < 0) break;
+        buffer = (buffer << 6) | v;
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            out += static_cast<char>((buffer >> bits) & 0xFF);
+        }
+    }
+    return out;
+}
+
+/// Checks a base64 GLB and keeps it for the glTF validator.
+void expectGlb(const json& glb, const std::string& name) {
+    ASSERT_TRUE(glb.is_string());
+    const std::string bytes = decodeBase64(glb.get<std::string>());
+    ASSERT_GT(bytes.size(), 20u);
+    EXPECT_EQ(bytes.substr(0, 4), "glTF");
+    const auto dir = scratchDirectory("studio_" + name);
+    writeFileAtomic((dir / (name + ".glb")).string(), bytes);
+    keepForValidation(dir / (name + ".glb"), "studio_" + name + ".glb");
+}
+
+class Studio : public ::testing::Test {
+protected:
+    void SetUp() override { ASSERT_TRUE(server().running()) << "ramus serve did not start"; }
+};
+
+TEST_F(Studio, ListsExamplesSpeciesAndHeadKinds) {
+    auto c = client();
+    auto res = c.Get("/api/examples");
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 200);
+    const json body = json::parse(res->body);
+    EXPECT_GE(body["lsystems"].size(), 20u);
+    EXPECT_GE(body["colonize"].size(), 3u);
+    EXPECT_EQ(body["species"].size(), 44u);
+    EXPECT_EQ(body["head_kinds"].size(), 4u);
+    bool koch = false;
+    for (const json& e : body["lsystems"]) koch = koch || e["name"] == "koch_island";
+    EXPECT_TRUE(koch);
+}
+
+TEST_F(Studio, DerivesAnLSystemWithTheLibrarysModuleCount) {
+    const std::string text = readFile(RAMUS_SOURCE_DIR "/examples/lsystems/koch_island.lsys");
+    const Reply r = post("/api/lsystem", json{{"text", text}, {"derivations", 2}});
+    ASSERT_EQ(r.status, 200) << r.body.dump();
+    DeriveOptions options;
+    options.derivations = 2;
+    const std::size_t modules = deriveLSystem(parseLSystem(text), options).size();
+    EXPECT_EQ(r.body["stats"]["modules"], modules);
+    EXPECT_GT(r.body["stats"]["triangles"].get<int>(), 0);
+    expectGlb(r.body["glb"], "koch_island");
+}
+
+TEST_F(Studio, ReportsASyntaxErrorAtItsLineAndColumn) {
+    const Reply r = post("/api/lsystem", json{{"text", "axiom: F\nF -> F(+F\n"}});
+    ASSERT_EQ(r.status, 400) << r.body.dump();
+    EXPECT_EQ(r.body["error"]["line"], 2);
+    EXPECT_GT(r.body["error"]["column"].get<int>(), 0);
+    EXPECT_NE(r.body["error"]["message"].get<std::string>().find("input.lsys:2:"),
+              std::string::npos);
+}
+
+TEST_F(Studio, StopsARunawayLSystemAtTheModuleLimit) {
+    const Reply r =
+        post("/api/lsystem", json{{"text", "axiom: A\nA -> AA\n"}, {"derivations", 40}});
+    ASSERT_EQ(r.status, 400) << r.body.dump();
+    EXPECT_NE(r.body["error"]["message"].get<std::string>().find("module limit"),
+              std::string::npos);
+}
+
+TEST_F(Studio, RejectsMalformedJson) {
+    const Reply r = post("/api/lsystem", std::string("{\"text\": "));
+    ASSERT_EQ(r.status, 400);
+    EXPECT_NE(r.body["error"]["message"].get<std::string>().find("malformed JSON"),
+              std::string::npos);
+}
+
+TEST_F(Studio, RejectsAHugeBodyWithAJsonError) {
+    const Reply r = post("/api/lsystem", json{{"text", std::string(300'000, 'F')}});
+    ASSERT_EQ(r.status, 413);
+    EXPECT_NE(r.body["error"]["message"].get<std::string>().find("too large"), std::string::npos);
+}
+
+TEST_F(Studio, RejectsAWrongTypeNamingTheField) {
+    const Reply r = post("/api/skeleton", json{{"legs", "four"}});
+    ASSERT_EQ(r.status, 400);
+    EXPECT_NE(r.body["error"]["message"].get<std::string>().find("legs"), std::string::npos);
+}
+
+TEST_F(Studio, GeneratesSkeletonsWithMetadata) {
+    const Reply r = post("/api/skeleton", json{{"legs", 4}, {"count", 2}, {"seed", 7}});
+    ASSERT_EQ(r.status, 200) << r.body.dump();
+    ASSERT_EQ(r.body["skeletons"].size(), 2u);
+    EXPECT_EQ(r.body["skeletons"][1]["name"], "skeleton1");
+    EXPECT_EQ(r.body["skeletons"][0]["metadata"]["seed"], "7");
+    expectGlb(r.body["skeletons"][0]["glb"], "skeleton_4_legs");
+    // The same request gives the same model (seeded).
+    const Reply again = post("/api/skeleton", json{{"legs", 4}, {"count", 2}, {"seed", 7}});
+    EXPECT_EQ(again.body["skeletons"][0]["glb"], r.body["skeletons"][0]["glb"]);
+}
+
+TEST_F(Studio, RegeneratesASavedSkeleton) {
+    const Reply first = post("/api/skeleton", json{{"wings", 2}, {"seed", 3}});
+    ASSERT_EQ(first.status, 200) << first.body.dump();
+    json saved = first.body["skeletons"][0]["metadata"];
+    saved.erase("skeleton");  // the bone list is informative; the design regenerates it
+    const Reply again = post("/api/skeleton", json{{"saved", saved}});
+    ASSERT_EQ(again.status, 200) << again.body.dump();
+    EXPECT_EQ(again.body["skeletons"][0]["glb"], first.body["skeletons"][0]["glb"]);
+}
+
+TEST_F(Studio, ColonizesAConfigAndReturnsItsPoints) {
+    const json config = json::parse(readFile(RAMUS_SOURCE_DIR "/examples/colonize/broadleaf.json"));
+    const Reply r = post("/api/colonize", json{{"config", config}});
+    ASSERT_EQ(r.status, 200) << r.body.dump();
+    EXPECT_GT(r.body["stats"]["nodes"].get<int>(), 100);
+    EXPECT_EQ(r.body["points"].size() % 3, 0u);
+    EXPECT_GT(r.body["points"].size(), 0u);
+    expectGlb(r.body["glb"], "broadleaf");
+}
+
+TEST_F(Studio, RefusesConfigsThatReadServerFiles) {
+    const json config = {{"envelopes", {{{"shape", "mesh"}, {"file", "/etc/passwd"}}}}};
+    const Reply r = post("/api/colonize", json{{"config", config}});
+    ASSERT_EQ(r.status, 400);
+    EXPECT_NE(r.body["error"]["message"].get<std::string>().find("envelopes[0].file"),
+              std::string::npos);
+}
+
+TEST_F(Studio, AnswersConcurrentRequestsOrSaysItIsBusy) {
+    std::atomic<int> ok{0}, busy{0}, other{0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 8; ++t) {
+        threads.emplace_back([&, t] {
+            const Reply r = post("/api/skeleton", json{{"legs", 4}, {"seed", t}, {"count", 4}});
+            (r.status == 200 ? ok : r.status == 503 ? busy : other)++;
+        });
+    }
+    for (std::thread& t : threads) t.join();
+    EXPECT_EQ(other.load(), 0);
+    EXPECT_GE(ok.load(), 4);  // 2 running + 2 queued at least
+    EXPECT_EQ(ok.load() + busy.load(), 8);
+    // Still alive afterwards.
+    EXPECT_EQ(post("/api/skeleton", json{{"legs", 2}}).status, 200);
+}
+
+TEST_F(Studio, UnknownRoutesGetAJson404) {
+    auto c = client();
+    auto res = c.Get("/api/nothing");
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 404);
+    EXPECT_TRUE(json::parse(res->body).contains("error"));
+}
+
+}  // namespace
+}  // namespace ramus::testing
