@@ -12,6 +12,7 @@ export class SkeletonPanel {
     this.saved = undefined;
     for (const s of examples.species) $('sk-example').append(new Option(`${s.name} (${s.class})`, s.name));
     for (const h of examples.head_kinds) $('sk-head').append(new Option(h, h));
+    for (const r of examples.resolutions) $('sk-resolution').append(new Option(r, r));
     $('sk-load').addEventListener('change', () => this.load($('sk-load').files[0]));
   }
 
