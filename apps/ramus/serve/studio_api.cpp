@@ -246,38 +246,39 @@ nlohmann::json examplesResponse(const std::string& root) {
         species.push_back(
             {{"name", s.name}, {"name_de", s.nameDe}, {"class", animalClassName(s.animalClass)}});
     }
-    return {
-        {"lsystems", lsystems}, {"colonize", colonize}, {"species", species},
-            {"head_kinds", headKindNames()}, {
-            "resolutions", { "box" }
-        }  // low and high come with the bone-model library (issue 6)};
-    }
+    // Low and high resolutions come with the bone-model library (issue 6).
+    return {{"lsystems", lsystems},
+            {"colonize", colonize},
+            {"species", species},
+            {"head_kinds", headKindNames()},
+            {"resolutions", nlohmann::json::array({"box"})}};
+}
 
-    std::string base64(std::string_view bytes) {
-        static constexpr char kAlphabet[] =
-            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-        std::string out;
-        out.reserve((bytes.size() + 2) / 3 * 4);
-        std::size_t i = 0;
-        for (; i + 3 <= bytes.size(); i += 3) {
-            const auto a = static_cast<unsigned char>(bytes[i]);
-            const auto b = static_cast<unsigned char>(bytes[i + 1]);
-            const auto c = static_cast<unsigned char>(bytes[i + 2]);
-            out += kAlphabet[a >> 2];
-            out += kAlphabet[((a & 3) << 4) | (b >> 4)];
-            out += kAlphabet[((b & 15) << 2) | (c >> 6)];
-            out += kAlphabet[c & 63];
-        }
-        if (i < bytes.size()) {
-            const auto a = static_cast<unsigned char>(bytes[i]);
-            const bool two = i + 1 < bytes.size();
-            const auto b = two ? static_cast<unsigned char>(bytes[i + 1]) : 0u;
-            out += kAlphabet[a >> 2];
-            out += kAlphabet[((a & 3) << 4) | (b >> 4)];
-            out += two ? kAlphabet[(b & 15) << 2] : '=';
-            out += '=';
-        }
-        return out;
+std::string base64(std::string_view bytes) {
+    static constexpr char kAlphabet[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    std::size_t i = 0;
+    for (; i + 3 <= bytes.size(); i += 3) {
+        const auto a = static_cast<unsigned char>(bytes[i]);
+        const auto b = static_cast<unsigned char>(bytes[i + 1]);
+        const auto c = static_cast<unsigned char>(bytes[i + 2]);
+        out += kAlphabet[a >> 2];
+        out += kAlphabet[((a & 3) << 4) | (b >> 4)];
+        out += kAlphabet[((b & 15) << 2) | (c >> 6)];
+        out += kAlphabet[c & 63];
     }
+    if (i < bytes.size()) {
+        const auto a = static_cast<unsigned char>(bytes[i]);
+        const bool two = i + 1 < bytes.size();
+        const auto b = two ? static_cast<unsigned char>(bytes[i + 1]) : 0u;
+        out += kAlphabet[a >> 2];
+        out += kAlphabet[((a & 3) << 4) | (b >> 4)];
+        out += two ? kAlphabet[(b & 15) << 2] : '=';
+        out += '=';
+    }
+    return out;
+}
 
 }  // namespace ramus::studio
