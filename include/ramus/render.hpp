@@ -2,6 +2,7 @@
 // model's bounds). Deterministic: same scene and params → identical pixels.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -56,6 +57,27 @@ struct Image {
 /// (opaque). Throws Error for sizes outside 1..16384 or a scene that fails the exporters'
 /// checks (e.g. indices out of range).
 Image renderScene(const Scene& scene, const RenderParams& params = {});
+
+/// One tile of a contact sheet: a rendered image and the label drawn under it.
+struct SheetTile {
+    Image image;
+    std::string label;  ///< printable ASCII; other bytes print as '?'; cut to fit the tile
+};
+
+/// Layout of a contact sheet.
+struct SheetParams {
+    int columns = 0;  ///< tiles per row; 0 = the smallest n with n·n ≥ tile count
+    int gap = 8;      ///< pixels between tiles and around the sheet
+    bool labels = true;
+    std::array<std::uint8_t, 4> background{255, 255, 255, 255};
+    std::array<std::uint8_t, 4> text{30, 30, 30, 255};
+};
+
+/// Tiles images row by row into one image (issue 8 contact sheets): each cell is as large as
+/// the largest tile (smaller tiles are centred), with the label under the tile in a simple
+/// built-in font (stb_easy_font, scaled 2×). Throws Error for no tiles, a negative gap or
+/// column count, or a sheet larger than 16384 px on a side.
+Image composeContactSheet(const std::vector<SheetTile>& tiles, const SheetParams& params = {});
 
 /// Encodes PNG bytes (stb_image_write).
 std::string encodePng(const Image& image);
