@@ -23,6 +23,8 @@ struct ColonizeOptions {
     std::string config;
     std::vector<std::string> seed;  // 0 or 1 value; a vector tells "absent" from "0"
     std::string points;
+    std::size_t maxPoints = 50'000'000;
+    std::size_t maxNodes = 10'000'000;
     bool stats = false;
     TreeOutputs outputs;
     TubeMeshParams mesh;  // flags; applied over the config's "mesh" object when given
@@ -75,9 +77,22 @@ std::string encodeForest(const std::vector<BranchTree>& trees, const TubeMeshPar
     return text + "]}\n";
 }
 
+/// --max-points: checked on the envelopes' counts before sampling, and on all points after.
+void checkPointCount(std::size_t count, std::size_t limit, const char* what) {
+    if (count > limit) {
+        throw Error(std::string(what) + " " + std::to_string(count) +
+                    " attraction points, above the limit of " + std::to_string(limit) +
+                    "; expected fewer points, or a larger --max-points");
+    }
+}
+
 void run(ColonizeOptions& o) {
     ColonizeConfig config = loadColonizeConfig(o.config);
     if (!o.seed.empty()) config.seed = parseSeed(o.seed.front());
+    config.params.maxNodes = o.maxNodes;
+    std::size_t requested = 0;
+    for (const Envelope& e : config.envelopes) requested += e.pointCount;
+    checkPointCount(requested, o.maxPoints, "the envelopes ask for");
     const TubeMeshParams mesh = meshParams(o, config);
     if (!o.stats && !o.outputs.any()) {
         o.outputs.model = std::filesystem::path(o.config).stem().string() + ".glb";
@@ -91,6 +106,7 @@ void run(ColonizeOptions& o) {
             removePointsInside(readPointsFile(o.points), config.obstacles);
         points.insert(points.end(), extra.begin(), extra.end());
     }
+    checkPointCount(points.size(), o.maxPoints, "the config and --points give");
     timer.lap("sample");
 
     const ColonizeResult result = growFromConfig(config, points);
@@ -132,6 +148,14 @@ void addColonizeCommand(CLI::App& app) {
         ->expected(1);
     cmd->add_option("--points", options->points,
                     "extra attraction points from a .xyz, .txt, .csv or ASCII .ply file");
+    cmd->add_option("--max-points", options->maxPoints,
+                    "stop with an error when there would be more attraction points")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--max-nodes", options->maxNodes,
+                    "stop with an error when the trees would grow more nodes")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
     addTreeOutputOptions(*cmd, options->outputs);
     addTubeMeshOptions(*cmd, options->mesh);

@@ -41,6 +41,9 @@ struct ColonizeParams {
     /// Weighted growth: the step is 2·D at branch depth 0 falling linearly to D at
     /// maxBranchDepth (which must then be ≥ 1). Z of the parent decides.
     bool weightedGrowth = false;
+    /// Limit on the nodes of all trees (≥ 1): growth that would exceed it stops with an Error
+    /// (a runaway config fails clearly instead of exhausting memory; ~100 bytes per node).
+    std::size_t maxNodes = 10'000'000;
     /// Start of each tree (at least one). Several roots compete for the same points; a root
     /// farther than d_i from every point first grows a straight trunk towards the nearest one.
     std::vector<Vec3> roots{Vec3::Zero()};

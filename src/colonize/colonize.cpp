@@ -251,6 +251,13 @@ bool Colonizer::tryGrow(NodeId node, int iteration) {
         isDuplicate(child)) {
         return false;
     }
+    if (nodePos_.size() >= params_.maxNodes) {
+        throw Error("colonization would exceed the node limit of " +
+                    std::to_string(params_.maxNodes) + " nodes at iteration " +
+                    std::to_string(iteration) +
+                    "; expected fewer points or iterations, a larger step, or a larger "
+                    "--max-nodes (ColonizeParams::maxNodes)");
+    }
     const NodeId id = addNode(node, child, t, iteration);
     if (trunk) trunkTip_[t] = id;
     newNodes_.push_back(id);

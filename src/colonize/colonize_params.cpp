@@ -46,6 +46,7 @@ void validateColonizeParams(const ColonizeParams& p) {
         invalid("maxBranchDepth (max_Z)", "a depth >= 1 when weighted growth is on",
                 p.maxBranchDepth);
     }
+    if (p.maxNodes < 1) invalid("maxNodes", "a count >= 1", static_cast<double>(p.maxNodes));
     if (p.roots.empty()) throw Error("roots is empty; expected at least one root position");
     for (const Vec3& r : p.roots) {
         if (!r.allFinite()) throw Error("a root position is not finite");

@@ -94,3 +94,28 @@ TEST(ColonizeCli, AMissingConfigIsAUsageError) {
 
 }  // namespace
 }  // namespace ramus::testing
+
+namespace ramus::testing {
+namespace {
+
+TEST(ColonizeCli, TooManyPointsStopBeforeSampling) {
+    const auto dir = scratchDirectory("colonize_max_points");
+    const CommandResult r = runRamus(
+        "colonize " + kRing + " --max-points 1999 -o '" + (dir / "t.glb").string() + "'", dir);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("2000 attraction points, above the limit of 1999"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "t.glb"));
+}
+
+TEST(ColonizeCli, TooManyNodesStopGrowthWithAClearError) {
+    const auto dir = scratchDirectory("colonize_max_nodes");
+    const CommandResult r = runRamus(
+        "colonize " + kRing + " --max-nodes 50 -o '" + (dir / "t.glb").string() + "'", dir);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("node limit of 50 nodes"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "t.glb"));
+}
+
+}  // namespace
+}  // namespace ramus::testing

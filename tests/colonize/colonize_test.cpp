@@ -361,3 +361,33 @@ TEST(Colonize, NonFinitePointsAreRejected) {
 
 }  // namespace
 }  // namespace ramus::testing
+
+namespace ramus::testing {
+namespace {
+
+TEST(ColonizeLimits, GrowthBeyondTheNodeLimitIsAnError) {
+    const std::vector<Vec3> points = randomPoints(400, -50, 50, 5);
+    ColonizeParams p = smallParams();
+    const std::size_t nodes = colonize(p, points).nodeCount();
+    ASSERT_GT(nodes, 20u);
+    p.maxNodes = nodes;  // exactly enough: fine
+    EXPECT_EQ(colonize(p, points).nodeCount(), nodes);
+    p.maxNodes = nodes - 1;
+    try {
+        colonize(p, points);
+        FAIL() << "expected the node limit to stop growth";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("node limit of " + std::to_string(nodes - 1)),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(ColonizeLimits, AZeroNodeLimitIsInvalid) {
+    ColonizeParams p = smallParams();
+    p.maxNodes = 0;
+    EXPECT_THROW(validateColonizeParams(p), Error);
+}
+
+}  // namespace
+}  // namespace ramus::testing
