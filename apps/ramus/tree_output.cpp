@@ -1,5 +1,6 @@
 #include "tree_output.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "ramus/error.hpp"
@@ -19,18 +20,37 @@ void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs) {
     command.add_option("--size", outputs.size, "preview size WxH")->capture_default_str();
 }
 
+namespace {
+
+/// A finite number above `lo` (or equal to it when `allowLo`) and below `hi`. CLI11's own
+/// range checks let NaN through (it compares false) and print infinities badly.
+CLI::Validator finiteNumber(double lo, bool allowLo, double hi, const std::string& expected) {
+    return CLI::Validator(
+        [=](std::string& text) {
+            double value = 0.0;
+            const bool ok = CLI::detail::lexical_cast(text, value) && std::isfinite(value) &&
+                            (value > lo || (allowLo && value == lo)) && value < hi;
+            return ok ? std::string() : "expected " + expected + ", got " + text;
+        },
+        expected);
+}
+
+const double kHuge = 1e300;
+
+}  // namespace
+
 void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params) {
     command
         .add_option("--leaf-radius", params.leafRadius,
                     "tip radius r0 for Murray's rule, model units (0 = 4% of mean edge)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
     command.add_option("--radius-exponent", params.radiusExponent, "Murray exponent g (> 0)")
-        ->check(CLI::PositiveNumber)
+        ->check(finiteNumber(0.0, false, kHuge, "a finite number > 0"))
         ->capture_default_str();
     command
         .add_option("--trunk-multiplier", params.trunkMultiplier,
                     "root ring radius = multiplier x root edge radius")
-        ->check(CLI::PositiveNumber)
+        ->check(finiteNumber(0.0, false, kHuge, "a finite number > 0"))
         ->capture_default_str();
     command.add_option("--min-segments", params.minSegments, "ring vertices, thinnest branches")
         ->check(CLI::Range(3, 256))
@@ -41,7 +61,7 @@ void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params) {
     command
         .add_option("--curve-reduction", params.curveReduction,
                     "max_K in [0,1): skip rings where a chain is this straight (0 = off)")
-        ->check(CLI::Range(0.0, 0.999999));
+        ->check(finiteNumber(0.0, true, 1.0, "a number in [0, 1)"));
     command
         .add_option(
             "--no-caps",

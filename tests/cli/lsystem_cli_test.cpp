@@ -150,3 +150,25 @@ TEST(LsystemCli, BadPreviewSizeIsRejectedBeforeWritingAnything) {
 
 }  // namespace
 }  // namespace ramus::testing
+
+namespace ramus::testing {
+namespace {
+
+TEST(LsystemCli, MesherFlagsRejectNonFiniteNumbers) {
+    const fs::path dir = scratchDirectory("lsystem_nonfinite");
+    const fs::path input = writeInput(dir, "tree.lsys", kTree);
+    for (const char* flag :
+         {"--leaf-radius", "--radius-exponent", "--trunk-multiplier", "--curve-reduction"}) {
+        for (const char* value : {"nan", "inf", "-inf"}) {
+            const CommandResult r = runRamus("lsystem '" + input.string() + "' " + flag + " " +
+                                                 value + " -o '" + (dir / "t.glb").string() + "'",
+                                             dir);
+            EXPECT_EQ(r.exitCode, 2) << flag << " " << value;
+            EXPECT_NE(r.err.find(std::string(flag) + ": expected"), std::string::npos) << r.err;
+        }
+    }
+    EXPECT_FALSE(fs::exists(dir / "t.glb"));
+}
+
+}  // namespace
+}  // namespace ramus::testing
