@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,5 +38,12 @@ struct PlannedSkeleton {
 /// variations, both a loaded skeleton and an example).
 std::vector<PlannedSkeleton> planSkeletons(const SkeletonStats& stats,
                                            const SkeletonPlanRequest& request);
+
+/// A plan request from JSON inputs with the keys of docs/studio.md ("POST /api/skeleton"; also
+/// batch manifests' skeleton inputs): legs, wings, arms, fins, neck_y, tail_x, height_m,
+/// length_m, two_per_girdle, neck_shoulder, head, example, spacing, spread, saved (metadata),
+/// variations, count (1…maxCount), seed, name. Absent keys have no influence. Throws Error
+/// naming the key. Other keys are left to the caller (e.g. "resolution").
+SkeletonPlanRequest skeletonPlanFromJson(const nlohmann::json& inputs, int maxCount);
 
 }  // namespace ramus::cli

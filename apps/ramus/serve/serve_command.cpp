@@ -1,7 +1,5 @@
 // `ramus serve`: the studio — a local HTTP server with the JSON API (studio_api.hpp) and the
 // web page (web/), docs/studio.md. Binds to 127.0.0.1 unless told otherwise.
-#include <httplib.h>
-
 #include <condition_variable>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +10,10 @@
 #include "commands.hpp"
 #include "ramus/error.hpp"
 #include "serve/studio_api.hpp"
+#include "serve/studio_request.hpp"
+
+// Last: httplib.h pulls in <resolv.h>, whose `_res` macro breaks Eigen's headers.
+#include <httplib.h>
 
 namespace ramus::cli {
 namespace {
@@ -118,6 +120,9 @@ httplib::Server::Handler post(Endpoint endpoint, GenerationGate& gate,
             sendJson(res, 200, endpoint(request, limits));
         } catch (const studio::ApiError& e) {
             sendJson(res, e.status(), e.body());
+        } catch (const Error& e) {
+            const studio::ApiError error = studio::badRequest(e);
+            sendJson(res, error.status(), error.body());
         } catch (const std::exception& e) {
             sendJson(res, 500, studio::ApiError(500, e.what()).body());
         }
