@@ -8,7 +8,7 @@ CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
 .PHONY: all deps build run showcase serve test check-tests studio-e2e validate format \
-        format-check bench bench-peers fuzz fuzz-smoke clean
+        format-check bench bench-peers fuzz fuzz-smoke batch-check clean
 
 all: build
 
@@ -58,6 +58,12 @@ studio-e2e: check-tests
 
 validate: check-tests studio-e2e
 	@node tests/validator/validate.mjs $(CHECK)/test-output
+
+# Issue 8's scale check: 10 000 box skeletons and 1 000 small trees with `ramus batch --jobs 2`
+# (Release build; make test runs small batches).
+batch-check: build
+	cd $(BUILD) && RAMUS_LARGE_TESTS=1 RAMUS_BIN=$(CURDIR)/$(RAMUS) ./ramus_tests_cli \
+	  --gtest_filter='BatchCli.TenThousand*'
 
 FORMAT_FILES = $(shell git ls-files '*.cpp' '*.hpp')
 format: deps

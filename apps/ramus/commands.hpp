@@ -13,5 +13,6 @@ void addPcaCommand(CLI::App& app);
 void addColonizeCommand(CLI::App& app);
 void addSkeletonCommand(CLI::App& app);
 void addServeCommand(CLI::App& app);
+void addBatchCommand(CLI::App& app);
 
 }  // namespace ramus::cli

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     ramus::cli::addColonizeCommand(app);
     ramus::cli::addSkeletonCommand(app);
     ramus::cli::addServeCommand(app);
+    ramus::cli::addBatchCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -89,6 +89,17 @@ SkeletonPlanRequest skeletonPlanFromJson(const nlohmann::json& r, int maxCount) 
     return plan;
 }
 
+bool isSkeletonInputKey(const std::string& key) {
+    static constexpr std::string_view kKeys[] = {
+        "legs",     "wings",          "arms",          "fins", "neck_y",  "tail_x",  "height_m",
+        "length_m", "two_per_girdle", "neck_shoulder", "head", "example", "spacing", "spread",
+        "saved",    "variations",     "count",         "seed", "name"};
+    for (std::string_view k : kKeys) {
+        if (k == key) return true;
+    }
+    return false;
+}
+
 std::vector<PlannedSkeleton> planSkeletons(const SkeletonStats& stats,
                                            const SkeletonPlanRequest& request) {
     checkRequest(request);

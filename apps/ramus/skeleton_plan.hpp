@@ -46,4 +46,7 @@ std::vector<PlannedSkeleton> planSkeletons(const SkeletonStats& stats,
 /// naming the key. Other keys are left to the caller (e.g. "resolution").
 SkeletonPlanRequest skeletonPlanFromJson(const nlohmann::json& inputs, int maxCount);
 
+/// Whether `key` is one of the keys skeletonPlanFromJson reads.
+bool isSkeletonInputKey(const std::string& key);
+
 }  // namespace ramus::cli
