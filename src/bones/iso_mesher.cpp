@@ -177,11 +177,22 @@ Mesh meshIsosurfaceWithinBudget(const DistanceFunction& distance, const Vec3& lo
     Mesh probe = meshAt(n);
     const double ratio =
         probe.triangleCount() > 0 ? static_cast<double>(maxTriangles) / probe.triangleCount() : 1.0;
-    n = std::clamp(static_cast<int>(std::floor(n * std::sqrt(ratio))) + 1, 2, maxCellsLongest);
-    for (;; --n) {
-        Mesh mesh = meshAt(n);
-        if (static_cast<int>(mesh.triangleCount()) <= maxTriangles || n <= 2) return mesh;
+    n = std::clamp(static_cast<int>(std::floor(n * std::sqrt(ratio))), 2, maxCellsLongest);
+    auto fits = [&](const Mesh& mesh) {
+        return static_cast<int>(mesh.triangleCount()) <= maxTriangles;
+    };
+    Mesh mesh = meshAt(n);
+    if (fits(mesh)) {  // refine while the next finer grid still fits
+        while (n < maxCellsLongest) {
+            Mesh finer = meshAt(n + 1);
+            if (!fits(finer)) break;
+            mesh = std::move(finer);
+            ++n;
+        }
+        return mesh;
     }
+    while (n > 2 && !fits(mesh)) mesh = meshAt(--n);  // coarsen until it fits
+    return mesh;
 }
 
 }  // namespace ramus

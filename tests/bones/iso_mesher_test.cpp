@@ -112,7 +112,7 @@ TEST(IsoMesher, EmptyZeroSetGivesEmptyMesh) {
 }
 
 TEST(IsoMesher, BudgetedMeshStaysWithinBudgetAndIsClosed) {
-    for (int budget : {100, 400, 2000}) {
+    for (int budget : {200, 400, 2000}) {
         const Mesh mesh = meshIsosurfaceWithinBudget(kSphere, Vec3(-0.8, -1.1, -0.6),
                                                      Vec3(1.0, 0.7, 1.2), budget, 64);
         EXPECT_LE(static_cast<int>(mesh.triangleCount()), budget);
