@@ -36,8 +36,10 @@ inline std::string describeJson(const nlohmann::json& value) {
 }
 
 /// Parses JSON text. A syntax error throws Error "FILE:LINE:COL: invalid JSON: <reason>" with
-/// the location computed from nlohmann's byte offset and its reason kept. Other nlohmann
-/// exceptions (e.g. number overflow) pass through.
+/// the location computed from nlohmann's byte offset and its reason kept. A number too large
+/// for a double (e.g. 1e400, which nlohmann reports without a position) throws Error
+/// "FILE:LINE:COL: number '…' is out of range; expected a finite number", located at the
+/// number's first occurrence in the text.
 inline nlohmann::json parseJsonText(std::string_view text, const std::string& fileName) {
     try {
         return nlohmann::json::parse(text.begin(), text.end());
@@ -50,6 +52,17 @@ inline nlohmann::json parseJsonText(std::string_view text, const std::string& fi
         if (reason != std::string::npos) what = what.substr(reason + 2);
         throw Error(sourceLocAtOffset(text, e.byte > 0 ? e.byte - 1 : 0, fileName),
                     "invalid JSON: " + what);
+    } catch (const nlohmann::json::out_of_range& e) {
+        // "[json.exception.out_of_range.406] number overflow parsing '1e400'"
+        const std::string what = e.what();
+        const std::size_t open = what.find('\'');
+        const std::size_t close = what.rfind('\'');
+        const std::string number = open != std::string::npos && close > open
+                                       ? what.substr(open + 1, close - open - 1)
+                                       : std::string();
+        const std::size_t at = number.empty() ? std::string_view::npos : text.find(number);
+        throw Error(sourceLocAtOffset(text, at == std::string_view::npos ? 0 : at, fileName),
+                    "number '" + number + "' is out of range; expected a finite number");
     }
 }
 

@@ -184,6 +184,9 @@ TEST_F(Studio, RejectsMalformedJson) {
     ASSERT_EQ(r.status, 400);
     EXPECT_NE(r.body["error"]["message"].get<std::string>().find("malformed JSON"),
               std::string::npos);
+    // A number beyond double range is a 400 too, not a server error.
+    const Reply overflow = post("/api/lsystem", std::string("{\"text\": \"x\", \"seed\": 1e400}"));
+    EXPECT_EQ(overflow.status, 400);
 }
 
 TEST_F(Studio, RejectsAHugeBodyWithAJsonError) {

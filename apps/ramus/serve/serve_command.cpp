@@ -109,6 +109,11 @@ httplib::Server::Handler post(Endpoint endpoint, GenerationGate& gate,
                                         std::to_string(e.byte) + "; expected a JSON object";
             sendJson(res, 400, studio::ApiError(400, message).body());
             return;
+        } catch (const nlohmann::json::exception& e) {  // e.g. a number beyond double range
+            const std::string message =
+                std::string("request body: ") + e.what() + "; expected finite numbers";
+            sendJson(res, 400, studio::ApiError(400, message).body());
+            return;
         }
         if (!gate.enter()) {
             sendJson(res, 503,
