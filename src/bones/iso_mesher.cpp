@@ -182,16 +182,14 @@ Mesh meshIsosurfaceWithinBudget(const DistanceFunction& distance, const Vec3& lo
         return static_cast<int>(mesh.triangleCount()) <= maxTriangles;
     };
     Mesh mesh = meshAt(n);
-    if (fits(mesh)) {  // refine while the next finer grid still fits
-        while (n < maxCellsLongest) {
-            Mesh finer = meshAt(n + 1);
-            if (!fits(finer)) break;
-            mesh = std::move(finer);
-            ++n;
-        }
-        return mesh;
-    }
     while (n > 2 && !fits(mesh)) mesh = meshAt(--n);  // coarsen until it fits
+    // Counts are not monotonic in n: look a few sizes finer and keep the finest that fits.
+    constexpr int kLookAhead = 4;
+    const int last = std::min(maxCellsLongest, n + kLookAhead);
+    for (int m = n + 1; m <= last; ++m) {
+        Mesh finer = meshAt(m);
+        if (fits(finer)) mesh = std::move(finer);
+    }
     return mesh;
 }
 
