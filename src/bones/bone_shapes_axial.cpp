@@ -2,6 +2,7 @@
 //
 // Based on: seed 000 §5.6 (one model per bone kind in the unit cube, the 3-vertebra tail tip and
 // the double pelvis); shapes are blends of Quilez's signed-distance primitives (bones/sdf.hpp).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -80,7 +81,9 @@ BoneShape ribShape() {
             const double r0 = 0.3 - 0.12 * t0, r1 = 0.3 - 0.12 * t1;
             d = std::min(d, roundCone(p, ribPoint(t0), ribPoint(t1), r0, r1));
         }
-        return d;
+        // Cut flat at the cube's ends: a rib box is ~20× longer than thick, so rounded ends
+        // would stick far past the joint (above the spine) once fitted.
+        return std::max({d, -p.x(), p.x() - 1.0});
     };
     shape.lo = Vec3(-0.3, -0.4, -0.4);
     shape.hi = Vec3(1.1, 0.4, 0.8);

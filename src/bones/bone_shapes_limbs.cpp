@@ -68,7 +68,7 @@ double wingHand(const Vec3& p) {
     double d = roundCone(p, Vec3(0.05, 0.0, 0.0), Vec3(0.35, 0.0, 0.02), 0.16, 0.1);
     const Vec3 base(0.33, 0.0, 0.0);
     const Vec3 tips[3] = {Vec3(1.0, 0.0, 0.0), Vec3(0.82, 0.0, 0.3), Vec3(0.55, 0.0, -0.28)};
-    const double radii[3] = {0.12, 0.1, 0.09};
+    const double radii[3] = {0.15, 0.13, 0.12};
     for (int i = 0; i < 3; ++i) {
         const Vec3 tip = tips[i] - (tips[i] - base).normalized() * radii[i] * 0.4;
         const Vec3 knuckle = base + (tip - base) * 0.45;
@@ -120,7 +120,7 @@ BoneShape handShape(BoneModelKind kind) {
             shape.distance = fin;
             break;
         default:
-            shape.distance = [](const Vec3& p) { return hand(p, 0.42, 4, 0.07, 0.3); };
+            shape.distance = [](const Vec3& p) { return hand(p, 0.42, 4, 0.1, 0.28); };
             break;
     }
     shape.lo = Vec3(-0.1, -0.5, -0.55);

@@ -17,7 +17,7 @@ namespace {
 
 /// Low-resolution budgets per model kind (BoneModelKind order); High is kHighFactor times.
 constexpr std::array<int, kBoneModelKindCount> kLowBudget = {
-    300,   // vertebra
+    400,   // vertebra
     400,   // tail_tip
     150,   // rib
     1200,  // skull_herbivore

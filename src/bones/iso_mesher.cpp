@@ -163,30 +163,38 @@ Mesh meshIsosurface(const DistanceFunction& distance, const Vec3& lo, const Vec3
 
 Mesh meshIsosurfaceWithinBudget(const DistanceFunction& distance, const Vec3& lo, const Vec3& hi,
                                 int maxTriangles, int maxCellsLongest) {
+    // Grid sizes in quarter cells along the longest axis, so that the cell size can be tuned
+    // finer than whole cells; the box grows to a whole number of cells of that size.
+    constexpr int kSteps = 4;
     const Vec3 size = hi - lo;
     const double longest = size.maxCoeff();
-    auto meshAt = [&](int n) {
-        const double cell = longest / n;
+    auto meshAt = [&](int quarters) {
+        const double cell = longest * kSteps / quarters;
         std::array<int, 3> cells{};
-        for (int a = 0; a < 3; ++a)
-            cells[a] = std::max(1, static_cast<int>(std::ceil(size[a] / cell)));
-        return meshIsosurface(distance, lo, hi, cells);
+        for (int a = 0; a < 3; ++a) {
+            cells[a] = std::max(1, static_cast<int>(std::ceil(size[a] / cell - 1e-9)));
+        }
+        const Vec3 half = Vec3(cells[0], cells[1], cells[2]) * (cell * 0.5);
+        const Vec3 centre = (lo + hi) * 0.5;
+        return meshIsosurface(distance, centre - half, centre + half, cells);
     };
-    // Triangle counts grow about with n²: guess from a probe, then step down until it fits.
-    int n = std::max(2, std::min(maxCellsLongest, 16));
-    Mesh probe = meshAt(n);
-    const double ratio =
-        probe.triangleCount() > 0 ? static_cast<double>(maxTriangles) / probe.triangleCount() : 1.0;
-    n = std::clamp(static_cast<int>(std::floor(n * std::sqrt(ratio))), 2, maxCellsLongest);
     auto fits = [&](const Mesh& mesh) {
         return static_cast<int>(mesh.triangleCount()) <= maxTriangles;
     };
-    Mesh mesh = meshAt(n);
-    while (n > 2 && !fits(mesh)) mesh = meshAt(--n);  // coarsen until it fits
-    // Counts are not monotonic in n: look a few sizes finer and keep the finest that fits.
-    constexpr int kLookAhead = 4;
-    const int last = std::min(maxCellsLongest, n + kLookAhead);
-    for (int m = n + 1; m <= last; ++m) {
+    const int minQ = 2 * kSteps;
+    const int maxQ = std::max(minQ, maxCellsLongest * kSteps);
+    // Triangle counts grow about with n²: guess from a probe, then step down until it fits.
+    int q = std::clamp(16 * kSteps, minQ, maxQ);
+    const Mesh probe = meshAt(q);
+    const double ratio =
+        probe.triangleCount() > 0 ? static_cast<double>(maxTriangles) / probe.triangleCount() : 1.0;
+    q = std::clamp(static_cast<int>(std::floor(q * std::sqrt(ratio))), minQ, maxQ);
+    Mesh mesh = meshAt(q);
+    while (q > minQ && !fits(mesh)) mesh = meshAt(--q);  // coarsen until it fits
+    // Counts are not monotonic in the grid size: look a few sizes finer, keep the finest fit.
+    constexpr int kLookAhead = 2 * kSteps;
+    const int last = std::min(maxQ, q + kLookAhead);
+    for (int m = q + 1; m <= last; ++m) {
         Mesh finer = meshAt(m);
         if (fits(finer)) mesh = std::move(finer);
     }

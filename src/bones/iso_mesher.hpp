@@ -26,11 +26,12 @@ using DistanceFunction = std::function<double(const Vec3&)>;
 Mesh meshIsosurface(const DistanceFunction& distance, const Vec3& lo, const Vec3& hi,
                     const std::array<int, 3>& cells);
 
-/// The finest mesh of meshIsosurface within `maxTriangles` (≥ 1): the grid's cell size is the
-/// same on every axis and is searched deterministically from `maxCellsLongest` cells along the
-/// longest axis of [lo, hi]: from a guess (a probe at 16 cells, counts growing with n²) down until
-/// the mesh fits, then up to four sizes finer, keeping the finest that fits (counts are not
-/// monotonic in n). If even 2 cells are too many, the 2-cell mesh is returned.
+/// The finest mesh of meshIsosurface within `maxTriangles` (≥ 1) on a grid of cubic cells
+/// (the box grows to a whole number of them), at most `maxCellsLongest` cells along the longest
+/// axis of [lo, hi]. The cell count is searched deterministically in quarter cells: from a guess
+/// (a probe at 16 cells; counts grow with n²) down until the mesh fits, then up to two cells
+/// finer, keeping the finest that fits (counts are not monotonic in the grid size). If even 2
+/// cells are too many, the 2-cell mesh is returned.
 Mesh meshIsosurfaceWithinBudget(const DistanceFunction& distance, const Vec3& lo, const Vec3& hi,
                                 int maxTriangles, int maxCellsLongest);
 
