@@ -114,8 +114,7 @@ void run(ColonizeOptions& o) {
     for (const std::string& w : result.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     timer.restart();
-    Mesh model;
-    for (const BranchTree& tree : result.trees) appendMesh(model, buildTubeMesh(tree, mesh));
+    const Mesh model = forestMesh(result.trees, mesh);
     timer.lap("mesh");
 
     TreeOutputs outputs = o.outputs;

@@ -90,10 +90,7 @@ void run(LsystemOptions& o) {
     const TurtleResult shape = interpretTurtle(word, system.symbols, turtle);
     timer.lap("interpret");
 
-    Mesh mesh = buildTubeMesh(shape.tree, o.mesh);
-    if (shape.polygonCount() > 0) {
-        appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
-    }
+    const Mesh mesh = plantMesh(shape, o.mesh);
     timer.lap("mesh");
 
     writeTreeOutputs(o.outputs, shape.tree, mesh, o.mesh);

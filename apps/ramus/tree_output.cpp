@@ -111,4 +111,18 @@ void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const Stage
     std::printf("%s\n", counts.dump().c_str());
 }
 
+Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params) {
+    Mesh mesh = buildTubeMesh(shape.tree, params);
+    if (shape.polygonCount() > 0) {
+        appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
+    }
+    return mesh;
+}
+
+Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params) {
+    Mesh mesh;
+    for (const BranchTree& tree : trees) appendMesh(mesh, buildTubeMesh(tree, params));
+    return mesh;
+}
+
 }  // namespace ramus::cli

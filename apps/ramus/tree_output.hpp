@@ -12,6 +12,7 @@
 #include "ramus/branch_tree.hpp"
 #include "ramus/mesh.hpp"
 #include "ramus/tube_mesher.hpp"
+#include "ramus/turtle.hpp"
 
 namespace ramus::cli {
 
@@ -25,6 +26,12 @@ struct TreeOutputs {
 
     bool any() const { return !model.empty() || !treeJson.empty() || !png.empty(); }
 };
+
+/// The mesh of an interpreted L-system: tapered tubes plus its `{ . }` polygons.
+Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params);
+
+/// The tubes of several trees (colonization roots) in one mesh.
+Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params);
 
 /// Registers -o, --tree-json, --png, --view, --size.
 void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs);

@@ -15,6 +15,7 @@
 #include "ramus/tube_mesher.hpp"
 #include "ramus/turtle.hpp"
 #include "skeleton_plan.hpp"
+#include "tree_output.hpp"
 
 namespace ramus::cli {
 namespace {
@@ -134,11 +135,7 @@ void makeLsystem(const BatchManifest& manifest, const BatchItem& item, const fs:
     const ModuleString word = deriveLSystem(system, derive);
     const TurtleResult shape =
         interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings));
-    Mesh mesh = buildTubeMesh(shape.tree);
-    if (shape.polygonCount() > 0) {
-        appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
-    }
-    writeModel(makeSingleMeshScene(std::move(mesh), "tree"), dir, job, item);
+    writeModel(makeSingleMeshScene(plantMesh(shape, {}), "tree"), dir, job, item);
 }
 
 void makeColonize(const BatchManifest& manifest, const BatchItem& item, const fs::path& dir) {
@@ -148,9 +145,7 @@ void makeColonize(const BatchManifest& manifest, const BatchItem& item, const fs
     const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
     TubeMeshParams params;
     applyMeshOverrides(config, params);
-    Mesh mesh;
-    for (const BranchTree& tree : result.trees) appendMesh(mesh, buildTubeMesh(tree, params));
-    writeModel(makeSingleMeshScene(std::move(mesh), "tree"), dir, job, item);
+    writeModel(makeSingleMeshScene(forestMesh(result.trees, params), "tree"), dir, job, item);
 }
 
 }  // namespace

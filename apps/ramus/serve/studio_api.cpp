@@ -159,10 +159,7 @@ nlohmann::json lsystemRequest(const nlohmann::json& request, const StudioLimits&
         interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings));
     clock.lap("interpret");
     deadline.check("turtle interpretation");
-    Mesh mesh = buildTubeMesh(shape.tree, meshParams);
-    if (shape.polygonCount() > 0) {
-        appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
-    }
+    Mesh mesh = cli::plantMesh(shape, meshParams);
     clock.lap("mesh");
     deadline.check("meshing");
     nlohmann::ordered_json stats = {
@@ -205,8 +202,7 @@ nlohmann::json colonizeRequest(const nlohmann::json& request, const StudioLimits
     deadline.check("growth");
     TubeMeshParams meshParams;
     applyMeshOverrides(config, meshParams);
-    Mesh mesh;
-    for (const BranchTree& tree : result.trees) appendMesh(mesh, buildTubeMesh(tree, meshParams));
+    Mesh mesh = cli::forestMesh(result.trees, meshParams);
     clock.lap("mesh");
     deadline.check("meshing");
     nlohmann::ordered_json stats = {{"trees", result.trees.size()},
