@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "ramus/bones.hpp"
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/render.hpp"
@@ -71,7 +72,8 @@ SkeletonInputs inputsFrom(const SkeletonOptions& o) {
 void writeSkeletonFiles(const SkeletonOptions& o, const SkeletonDesign& design,
                         const std::string& name, std::uint64_t seed) {
     const Skeleton skeleton = buildSkeleton(design);
-    const Scene scene = skeletonToScene(skeleton, SkeletonSceneParams{});
+    const Scene scene =
+        skeletonSceneAt(skeleton, *parseBoneResolution(o.resolution), design.headKind);
     const std::filesystem::path base = std::filesystem::path(o.outputDirectory) / name;
     writeGlb(scene, base.string() + ".glb");
     writeObj(scene, base.string() + ".obj");
@@ -172,8 +174,10 @@ void addSkeletonCommand(CLI::App& app) {
     cmd->add_flag("--variations", o->variations, "make variations of --load or --example");
     cmd->add_option("--count", o->count, "number of skeletons");
     cmd->add_option("--name", o->name, "file name stem; files are NAME<i>.glb/.obj/.json");
-    cmd->add_option("--resolution", o->resolution, "bone meshes: box")
-        ->check(CLI::IsMember({"box"}));
+    cmd->add_option("--resolution", o->resolution,
+                    "bone meshes: box, low or high (the default bone library)")
+        ->check(CLI::IsMember({"box", "low", "high"}))
+        ->capture_default_str();
     cmd->add_option("--seed", o->seed, "seed (non-negative integer)")->expected(1);
     cmd->add_flag("--png", o->png, "also write a PNG preview per skeleton");
     cmd->add_option("--view", o->view, "preview camera: side, front, top, three-quarter");

@@ -159,4 +159,10 @@ Mesh fitBoneModel(const BoneModel& model, const Bone& bone, std::optional<double
 BoneMeshSource boneMeshSource(const Skeleton& skeleton, const BoneLibrary& library,
                               BoneResolution resolution, std::string_view headKind);
 
+/// The skeleton's scene (skeletonToScene) with its bones at `resolution`: boxes, or the models
+/// of `library` (nullptr = BoneLibrary::builtin(resolution)) fitted by boneMeshSource. Throws
+/// Error for an unknown head kind or a library without the models.
+Scene skeletonSceneAt(const Skeleton& skeleton, BoneResolution resolution,
+                      std::string_view headKind, const BoneLibrary* library = nullptr);
+
 }  // namespace ramus

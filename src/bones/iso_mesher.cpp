@@ -186,8 +186,9 @@ Mesh meshIsosurfaceWithinBudget(const DistanceFunction& distance, const Vec3& lo
     // Triangle counts grow about with n²: guess from a probe, then step down until it fits.
     int q = std::clamp(16 * kSteps, minQ, maxQ);
     const Mesh probe = meshAt(q);
-    const double ratio =
-        probe.triangleCount() > 0 ? static_cast<double>(maxTriangles) / probe.triangleCount() : 1.0;
+    const double ratio = probe.triangleCount() > 0 ? static_cast<double>(maxTriangles) /
+                                                         static_cast<double>(probe.triangleCount())
+                                                   : 1.0;
     q = std::clamp(static_cast<int>(std::floor(q * std::sqrt(ratio))), minQ, maxQ);
     Mesh mesh = meshAt(q);
     while (q > minQ && !fits(mesh)) mesh = meshAt(--q);  // coarsen until it fits

@@ -108,3 +108,33 @@ TEST(SkeletonCli, UnknownSpeciesIsAnError) {
 
 }  // namespace
 }  // namespace ramus::testing
+
+namespace ramus::testing {
+namespace {
+
+TEST(SkeletonCli, BoneModelResolutionsWriteLargerValidModels) {
+    const fs::path dir = scratchDirectory("skeleton_resolutions");
+    std::uintmax_t previous = 0;
+    for (const char* resolution : {"box", "low", "high"}) {
+        const fs::path out = dir / resolution;
+        const CommandResult r =
+            runRamus("skeleton --legs 4 --seed 3 --png --size 64x64 --resolution " +
+                         std::string(resolution) + " -o '" + out.string() + "'",
+                     dir);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const std::uintmax_t size = fs::file_size(out / "skeleton0.glb");
+        EXPECT_GT(size, previous) << resolution;
+        previous = size;
+        EXPECT_TRUE(fs::exists(out / "skeleton0.png"));
+        keepForValidation(out / "skeleton0.glb",
+                          "cli_skeleton_" + std::string(resolution) + ".glb");
+    }
+    EXPECT_EQ(runRamus("skeleton --resolution ultra -o '" + dir.string() + "'", dir).exitCode, 2);
+    const CommandResult head =
+        runRamus("skeleton --resolution low --head unicorn -o '" + (dir / "u").string() + "'", dir);
+    EXPECT_EQ(head.exitCode, 1);
+    EXPECT_NE(head.err.find("unknown head kind"), std::string::npos) << head.err;
+}
+
+}  // namespace
+}  // namespace ramus::testing

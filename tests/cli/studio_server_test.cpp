@@ -213,6 +213,15 @@ TEST_F(Studio, GeneratesSkeletonsWithMetadata) {
     EXPECT_EQ(again.body["skeletons"][0]["glb"], r.body["skeletons"][0]["glb"]);
 }
 
+TEST_F(Studio, GeneratesSkeletonsWithBoneModels) {
+    const Reply r =
+        post("/api/skeleton", json{{"legs", 2}, {"resolution", "low"}, {"head", "bird"}});
+    ASSERT_EQ(r.status, 200) << r.body.dump();
+    expectGlb(r.body["skeletons"][0]["glb"], "skeleton_low_bird");
+    const Reply bad = post("/api/skeleton", json{{"resolution", "ultra"}});
+    EXPECT_EQ(bad.status, 400);
+}
+
 TEST_F(Studio, RegeneratesASavedSkeleton) {
     const Reply first = post("/api/skeleton", json{{"wings", 2}, {"seed", 3}});
     ASSERT_EQ(first.status, 200) << first.body.dump();

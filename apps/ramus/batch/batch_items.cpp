@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "json_inputs.hpp"
+#include "ramus/bones.hpp"
 #include "ramus/colonize.hpp"
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
@@ -64,16 +65,10 @@ SkeletonPlanRequest skeletonPlan(const nlohmann::json& inputs) {
                         "docs/batch.md (legs, wings, arms, fins, …)");
         }
     }
+    (void)choice(inputs, "resolution", BoneResolution::Box, parseBoneResolution,
+                 "box, low or high");
     nlohmann::json plain = inputs;
-    if (const auto* r = optionalMember(inputs, "resolution", nlohmann::json::value_t::string)) {
-        if (*r != "box") {
-            throw Error(
-                "inputs.resolution: expected box (bone models are not in batches yet), "
-                "got " +
-                r->dump());
-        }
-        plain.erase("resolution");
-    }
+    plain.erase("resolution");
     return skeletonPlanFromJson(plain, 1);
 }
 
@@ -118,7 +113,9 @@ void makeSkeleton(const BatchManifest& manifest, const BatchItem& item, const Sk
     plan.name = name;
     const PlannedSkeleton planned = planSkeletons(stats, plan).front();
     const Skeleton skeleton = buildSkeleton(planned.design);
-    writeModel(skeletonToScene(skeleton), dir, job, item);
+    const BoneResolution resolution = choice(job.inputs, "resolution", BoneResolution::Box,
+                                             parseBoneResolution, "box, low or high");
+    writeModel(skeletonSceneAt(skeleton, resolution, planned.design.headKind), dir, job, item);
     const fs::path metadata = (dir / expandOutput(job.output, item)).replace_extension(".json");
     writeSkeletonMetadata(metadata.string(), planned.design, skeleton, name, planned.seed);
 }

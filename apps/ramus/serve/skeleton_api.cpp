@@ -22,17 +22,12 @@ nlohmann::json skeletonRequest(const nlohmann::json& request, const StudioLimits
         choice(request, "resolution", BoneResolution::Box, parseBoneResolution, "box, low or high");
     const std::vector<cli::PlannedSkeleton> planned =
         withTextErrors([&] { return cli::planSkeletons(SkeletonStats::builtin(), plan); });
-    if (resolution != BoneResolution::Box) {
-        throw ApiError(400,
-                       "resolution: bone models (low, high) are not in the studio yet; "
-                       "expected box");
-    }
     nlohmann::json skeletons = nlohmann::json::array();
     std::size_t triangles = 0;
     for (const cli::PlannedSkeleton& p : planned) {
         const Skeleton skeleton = withTextErrors([&] { return buildSkeleton(p.design); });
-        const SkeletonSceneParams params;
-        const Scene scene = withTextErrors([&] { return skeletonToScene(skeleton, params); });
+        const Scene scene = withTextErrors(
+            [&] { return skeletonSceneAt(skeleton, resolution, p.design.headKind); });
         for (const Mesh& mesh : scene.meshes) triangles += mesh.triangleCount();
         checkTriangles(triangles, limits);
         skeletons.push_back({{"name", p.name},

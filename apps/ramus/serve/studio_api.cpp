@@ -242,12 +242,11 @@ nlohmann::json examplesResponse(const std::string& root) {
         species.push_back(
             {{"name", s.name}, {"name_de", s.nameDe}, {"class", animalClassName(s.animalClass)}});
     }
-    // Low and high resolutions come with the bone-model library (issue 6).
     return {{"lsystems", lsystems},
             {"colonize", colonize},
             {"species", species},
             {"head_kinds", headKindNames()},
-            {"resolutions", nlohmann::json::array({"box"})}};
+            {"resolutions", nlohmann::json::array({"box", "low", "high"})}};
 }
 
 std::string base64(std::string_view bytes) {
