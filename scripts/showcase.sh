@@ -42,3 +42,33 @@ skeleton --name fish --legs 0 --wings 0 --fins 4 --two-per-girdle --seed 1
 skeleton --name random --count 12 --seed 7
 skeleton --name elephant_variation --example "African elephant" --variations --count 4 --seed 3
 echo "showcase: skeletons written to $(cd "$sk" && pwd) (NAME<i>.glb/.obj/.json/.png)"
+
+# The same cases with bone models (docs/bones.md), and example species side by side at every
+# resolution, tiled into contact sheets.
+bones="$out/bones"
+mkdir -p "$bones"
+for res in low high; do
+  b() { "$ramus" skeleton --png --view side --resolution "$res" -o "$bones/$res" "$@"; }
+  b --name bird --legs 2 --wings 2 --head bird --seed 1
+  b --name kangaroo --example Kangaroo --legs 2 --arms 2 --seed 1
+  b --name elephant --example "African elephant" --seed 1
+  b --name pegasus --legs 4 --wings 2 --two-per-girdle --seed 1
+  b --name centaur --legs 4 --arms 2 --neck-shoulder forced --seed 1
+  b --name eight_legs --legs 8 --two-per-girdle --neck-shoulder forbidden --seed 1
+  b --name fish --legs 0 --wings 0 --fins 4 --two-per-girdle --head reptile --seed 1
+done
+sheet=()
+for spec in "African elephant:herbivore" "Horse (warmblood):herbivore" "Pigeon:bird" \
+            "Frog:reptile" "Snake:reptile"; do
+  species=${spec%%:*}
+  head=${spec##*:}
+  stem=$(echo "$species" | tr 'A-Z ' 'a-z_' | tr -cd 'a-z_')
+  for res in box low high; do
+    "$ramus" skeleton --example "$species" --head "$head" --resolution "$res" --seed 1 \
+      --name "${stem}_${res}" -o "$bones/species" >/dev/null
+    sheet+=("$bones/species/${stem}_${res}0.glb")
+  done
+done
+"$ramus" render "${sheet[@]}" --sheet --columns 3 --size 400x300 --view side \
+  -o "$bones/species_box_low_high.png"
+echo "showcase: bone models written to $(cd "$bones" && pwd) (low/, high/, species/, species_box_low_high.png)"
