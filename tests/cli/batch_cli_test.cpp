@@ -112,6 +112,8 @@ TEST(BatchCli, ResumeSkipsCompleteItemsAndRemakesMissingOnes) {
     const auto before = filesUnder(dir / "out");
     fs::remove(dir / "out" / "skel" / "skel_3.json");
     fs::remove(dir / "out" / "plants" / "plant_1.glb");
+    // What a killed writer leaves: a temp file next to the output it never renamed.
+    writeFileAtomic((dir / "out" / "plants" / "plant_1.glb.tmp-0123abcd").string(), "partial");
     const CommandResult r = batch(manifest, dir / "out", "--resume", dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const json summary = json::parse(r.out);

@@ -97,6 +97,22 @@ bool complete(const fs::path& dir, const std::vector<std::string>& outputs) {
     return true;
 }
 
+/// Temp files of writeFileAtomic ("NAME.tmp-xxxxxxxx") that a killed run (SIGKILL, power loss)
+/// left behind; --resume removes them.
+std::size_t removeStaleTempFiles(const fs::path& dir) {
+    std::size_t removed = 0;
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::end(it);
+         it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const std::size_t at = name.rfind(".tmp-");
+        if (at != std::string::npos && name.size() == at + 13 && it->is_regular_file()) {
+            removed += fs::remove(it->path(), ec) ? 1 : 0;
+        }
+    }
+    return removed;
+}
+
 struct Outcome {
     enum State { Pending, Done, Skipped, Failed } state = Pending;
     std::string error;
@@ -148,6 +164,7 @@ void run(const BatchOptions& o) {
 
     std::vector<Outcome> outcomes(items.size());
     if (o.resume) {
+        removeStaleTempFiles(dir);
         for (std::size_t k = 0; k < items.size(); ++k) {
             if (complete(dir, itemOutputs(manifest, items[k])))
                 outcomes[k].state = Outcome::Skipped;
