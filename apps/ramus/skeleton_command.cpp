@@ -15,6 +15,7 @@
 #include "ramus/skeleton.hpp"
 #include "ramus/skeleton_io.hpp"
 #include "ramus/skeleton_scene.hpp"
+#include "skeleton_plan.hpp"
 
 namespace ramus::cli {
 
@@ -118,26 +119,17 @@ void run(const SkeletonOptions& o) {
         o.species.empty() ? SkeletonStats::builtin() : SkeletonStats::load(o.species);
     std::filesystem::create_directories(o.outputDirectory);
 
-    std::optional<LoadedSkeleton> loaded;
-    if (!o.load.empty()) loaded = readSkeletonMetadata(o.load);
-    if (loaded && !o.variations) {
-        const std::string name = o.name == "skeleton" ? loaded->name : o.name;
-        writeSkeletonFiles(o, loaded->design, name, loaded->seed);
-        return;
-    }
-    const std::uint64_t seed = o.seed.empty() ? (loaded ? loaded->seed : 1) : o.seed.front();
-    std::optional<SkeletonDesign> source;
-    if (loaded) source = loaded->design;
-    if (!source && o.variations) {
-        Rng rng = Rng::forStream(seed, ~std::uint64_t{0});
-        source = designSkeleton(stats, inputs, rng);
-    }
-    for (int i = 0; i < o.count; ++i) {
-        Rng rng = Rng::forStream(seed, static_cast<std::uint64_t>(i));
-        const SkeletonDesign design = source ? varySkeletonDesign(stats, *source, inputs, rng)
-                                             : designSkeleton(stats, inputs, rng);
-        writeSkeletonFiles(o, design, o.name + std::to_string(i), seed);
-        printProgress(i + 1, o.count);
+    SkeletonPlanRequest request;
+    request.inputs = inputs;
+    if (!o.load.empty()) request.loaded = readSkeletonMetadata(o.load);
+    request.variations = o.variations;
+    request.count = o.count;
+    if (!o.seed.empty()) request.seed = o.seed.front();
+    request.name = o.name;
+    const std::vector<PlannedSkeleton> plan = planSkeletons(stats, request);
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+        writeSkeletonFiles(o, plan[i].design, plan[i].name, plan[i].seed);
+        printProgress(static_cast<int>(i + 1), static_cast<int>(plan.size()));
     }
 }
 
