@@ -426,7 +426,11 @@ TEST(SkeletonMetadata, OverflowingNumberIsRejected) {
         parseSkeletonMetadata(text, "big.json");
         FAIL();
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), "big.json: invalid JSON: number overflow parsing '1e999'");
+        // Located at the number (core/json_text.hpp).
+        EXPECT_EQ(e.loc().file, "big.json");
+        EXPECT_GT(e.loc().line, 1);
+        EXPECT_NE(std::string(e.what()).find("number '1e999' is out of range"), std::string::npos)
+            << e.what();
     }
 }
 
