@@ -28,6 +28,7 @@ struct ColonizeOptions {
     bool stats = false;
     TreeOutputs outputs;
     TubeMeshParams mesh;  // flags; applied over the config's "mesh" object when given
+    Junctions junctions = Junctions::Tubes;
     CLI::App* command = nullptr;
 };
 
@@ -114,7 +115,7 @@ void run(ColonizeOptions& o) {
     for (const std::string& w : result.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     timer.restart();
-    const Mesh model = forestMesh(result.trees, mesh);
+    const Mesh model = forestMesh(result.trees, mesh, o.junctions);
     timer.lap("mesh");
 
     TreeOutputs outputs = o.outputs;
@@ -158,6 +159,7 @@ void addColonizeCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
     addTreeOutputOptions(*cmd, options->outputs);
     addTubeMeshOptions(*cmd, options->mesh);
+    addJunctionOption(*cmd, options->junctions);
     cmd->callback([options] { run(*options); });
 }
 

@@ -27,6 +27,7 @@ struct LsystemOptions {
     bool stats = false;
     TreeOutputs outputs;
     TubeMeshParams mesh;
+    Junctions junctions = Junctions::Tubes;
 };
 
 // "NAME=VALUE" → pair; the value must be a plain number.
@@ -90,7 +91,7 @@ void run(LsystemOptions& o) {
     const TurtleResult shape = interpretTurtle(word, system.symbols, turtle);
     timer.lap("interpret");
 
-    const Mesh mesh = plantMesh(shape, o.mesh);
+    const Mesh mesh = plantMesh(shape, o.mesh, o.junctions);
     timer.lap("mesh");
 
     writeTreeOutputs(o.outputs, shape.tree, mesh, o.mesh);
@@ -126,6 +127,7 @@ void addLsystemCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
     addTreeOutputOptions(*cmd, options->outputs);
     addTubeMeshOptions(*cmd, options->mesh);
+    addJunctionOption(*cmd, options->junctions);
     cmd->callback([options] { run(*options); });
 }
 

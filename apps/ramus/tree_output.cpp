@@ -8,6 +8,7 @@
 #include "ramus/file_util.hpp"
 #include "ramus/render.hpp"
 #include "ramus/tree_json.hpp"
+#include "ramus/welded_mesher.hpp"
 
 namespace ramus::cli {
 
@@ -111,17 +112,42 @@ void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const Stage
     std::printf("%s\n", counts.dump().c_str());
 }
 
-Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params) {
-    Mesh mesh = buildTubeMesh(shape.tree, params);
+namespace {
+
+Mesh branchMesh(const BranchTree& tree, const TubeMeshParams& params, Junctions junctions) {
+    if (junctions == Junctions::Tubes) return buildTubeMesh(tree, params);
+    WeldedMeshParams welded;
+    welded.tube = params;
+    return buildWeldedTreeMesh(tree, welded);
+}
+
+}  // namespace
+
+void addJunctionOption(CLI::App& command, Junctions& junctions) {
+    command
+        .add_option(
+            "--weld",
+            [&junctions](const CLI::results_t&) {
+                junctions = Junctions::Welded;
+                return true;
+            },
+            "mesh each tree as one closed surface (welded junctions) instead of overlapping "
+            "tubes")
+        ->expected(0);
+}
+
+Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params, Junctions junctions) {
+    Mesh mesh = branchMesh(shape.tree, params, junctions);
     if (shape.polygonCount() > 0) {
         appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
     }
     return mesh;
 }
 
-Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params) {
+Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params,
+                Junctions junctions) {
     Mesh mesh;
-    for (const BranchTree& tree : trees) appendMesh(mesh, buildTubeMesh(tree, params));
+    for (const BranchTree& tree : trees) appendMesh(mesh, branchMesh(tree, params, junctions));
     return mesh;
 }
 

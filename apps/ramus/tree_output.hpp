@@ -27,11 +27,20 @@ struct TreeOutputs {
     bool any() const { return !model.empty() || !treeJson.empty() || !png.empty(); }
 };
 
+/// How branch nodes are meshed: a tube per chain, overlapping at branchings (buildTubeMesh),
+/// or one closed surface per tree (buildWeldedTreeMesh, flag --weld).
+enum class Junctions { Tubes, Welded };
+
 /// The mesh of an interpreted L-system: tapered tubes plus its `{ . }` polygons.
-Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params);
+Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params,
+               Junctions junctions = Junctions::Tubes);
 
 /// The tubes of several trees (colonization roots) in one mesh.
-Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params);
+Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params,
+                Junctions junctions = Junctions::Tubes);
+
+/// Registers --weld (welded junctions instead of overlapping tubes).
+void addJunctionOption(CLI::App& command, Junctions& junctions);
 
 /// Registers -o, --tree-json, --png, --view, --size.
 void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs);

@@ -1,0 +1,57 @@
+// Welded branch meshes (issue 9 item 1): a BranchTree meshed as one connected closed surface —
+// tubes along the branches, stitched together at branch nodes by convex-hull junctions
+// (Bærentzen, Misztal, Wełnicka 2012, "Converting skeletal structures to quad dominant
+// meshes"; Blender's skin modifier). The per-chain tubes of buildTubeMesh stay available.
+#pragma once
+
+#include <cstddef>
+
+#include "ramus/branch_tree.hpp"
+#include "ramus/mesh.hpp"
+#include "ramus/tube_mesher.hpp"
+
+namespace ramus {
+
+/// Welded meshing parameters. Radii, segment counts, curve reduction, start rotation, UV
+/// aspect and material mean the same as for buildTubeMesh (see TubeMeshParams); `tube.capTips`
+/// is ignored: a welded mesh is always closed.
+struct WeldedMeshParams {
+    TubeMeshParams tube;
+    /// Clearance between the branches' rings at a junction, as a fraction of the ring's own
+    /// radius (> 0; 0.05 = 5 %). Larger values move the rings farther from the branch node.
+    double junctionMargin = 0.05;
+};
+
+/// What the welder did, for tests and --stats.
+struct WeldReport {
+    std::size_t junctions = 0;      ///< branch nodes (≥ 2 drawn edges leaving a tree part)
+    std::size_t merges = 0;         ///< junctions merged with a neighbour (branch nodes too close)
+    std::size_t absorbedLimbs = 0;  ///< short end branches taken whole into a junction
+    /// Junctions at their size limit (8 branch nodes, 96 inner ring positions) whose rings
+    /// could not be placed clear of each other (dense thick branching); usually a fallback.
+    std::size_t crowded = 0;
+    /// Limbs between two junctions too short for both end rings, left overlapping (the
+    /// surface stays closed but intersects itself there).
+    std::size_t crossings = 0;
+    std::size_t fallbacks = 0;      ///< junctions left as separately capped tubes (should be 0)
+    std::size_t components = 0;     ///< closed surfaces (1 per tree unless hidden edges split it)
+};
+
+/// Meshes `tree` as closed surfaces: one per part of the tree connected by drawn edges
+/// (hidden edges split it; a normal tree gives one). Every vertex ring of a branch lies on the
+/// branch's tapered tube exactly as buildTubeMesh places it (same radii, rotation-minimizing
+/// frames, segment rule per unbranched stretch); at each branch node the rings of the meeting
+/// branches are moved just far enough from the node that no ring's plane cuts another
+/// branch, and the convex hull of those rings, minus the rings' own discs, joins them. Branch
+/// nodes closer than that are merged into one junction; end branches shorter than their
+/// junction become part of it. Tips and the base are closed with flat fans. Coincident nodes
+/// are merged. Output as buildTubeMesh: mesh "tree", unit normals (radial on rings), glTF
+/// tangents (w = +1), UVs (u around the ring, v along the branch, continuing through branch
+/// nodes), one primitive "bark" with params.tube.material; triangles counter-clockwise from
+/// outside. Seam and cap vertices repeat ring positions bit-exactly, so welding by position
+/// gives a 2-manifold. Empty tree, root only or only hidden edges → empty mesh. Deterministic.
+/// `report`, when given, receives the counts above.
+Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params = {},
+                         WeldReport* report = nullptr);
+
+}  // namespace ramus

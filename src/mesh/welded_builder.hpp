@@ -1,0 +1,84 @@
+// The welded mesher's output stage, shared by welded_mesher.cpp (tubes along limbs, caps) and
+// welded_junction_mesh.cpp (convex-hull junctions). Internal to src/mesh.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ramus/mesh.hpp"
+#include "ramus/welded_mesher.hpp"
+#include "ring_frames.hpp"
+#include "welded_hull.hpp"
+#include "welded_skeleton.hpp"
+
+namespace ramus::detail {
+
+/// One emitted ring: n + 1 vertices from `base` (the last repeats the first with u = 1).
+struct RingRecord {
+    std::uint32_t base = 0;
+    int n = 0;
+    Vec3 center = Vec3::Zero();
+    Vec3 e1 = Vec3::Zero();  ///< frame: vertex i at center + radius (cos_i e1 + sin_i e2)
+    Vec3 e2 = Vec3::Zero();
+    Vec3 outward = Vec3::Zero();  ///< unit, away from the junction (or the limb's direction)
+    double radius = 0.0;
+};
+
+class WeldBuilder {
+public:
+    WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params);
+    Mesh build(WeldReport* report);
+
+private:
+    struct LimbRing {
+        RingPlace place;
+        double v;
+    };
+
+    // welded_mesher.cpp
+    const AngleTable& table(int n);
+    void gatherLimbRings(std::int32_t limb);
+    void meshLimb(std::int32_t limb);
+    void meshAbsorbedLimb(std::int32_t limb);
+    RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n);
+    void emitSides(std::uint32_t a, std::uint32_t b, int n);
+    void emitCap(const RingRecord& ring, const Vec3& normal, bool tip);
+    void dropUnusedVertices();
+
+    // welded_junction_mesh.cpp
+    void meshJunction(NodeId cluster);
+    void gatherJunction(NodeId cluster);
+    bool hullJunction(bool holes);
+    void fallbackJunction();
+    std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
+
+    const BranchTree& tree_;
+    const WeldedMeshParams& params_;
+    WeldSkeleton skeleton_;
+    WeldJunctions junctions_;
+    double margin_ = 0.05;
+    double vScale_ = 1.0;
+    std::vector<AngleTable> tables_;  // by n - 3, built on first use
+    std::vector<double> keyV_;        // per node: texture v at key nodes
+    std::vector<RingRecord> startRing_, endRing_;  // per limb: its rings at junctions
+    std::vector<std::uint32_t> discFirst_;         // per limb + 1: absorbed rings in discs_
+    std::vector<RingRecord> discs_;
+    std::vector<LimbRing> rings_;  // rings of the limb being meshed, reused
+    Mesh mesh_;
+    WeldReport report_;
+
+    // Junction scratch, reused.
+    struct HullRing {
+        RingRecord ring;
+        bool hole;  // an arm's ring (its disc is cut out) or an absorbed ring (plain points)
+        bool start; // the ring starts its limb (else it ends it)
+    };
+    std::vector<HullRing> hullRings_;
+    std::vector<Vec3> points_;
+    std::vector<std::int32_t> pointRing_;  // per hull point: index into hullRings_
+    std::vector<std::int32_t> pointIndex_; // per hull point: vertex in its ring, -1 = apex
+    std::vector<int> coneFaces_;
+    ConvexHull hull_;
+};
+
+}  // namespace ramus::detail

@@ -1,0 +1,166 @@
+// Junctions of the welded mesher: the convex hull of the rings meeting at a branch node, with
+// each arm's disc removed, joins the arms' tubes into one surface.
+//
+// Based on: Bærentzen, Misztal, Wełnicka 2012, "Converting skeletal structures to quad
+// dominant meshes" §4 (branch node polyhedra from convex hulls), as in Blender's skin
+// modifier. welded_junctions.cpp has placed the rings so that every arm's ring plane has all
+// other rings behind it; then the hull has each ring as a face, and removing those faces
+// leaves a sphere with one hole per arm whose rim is exactly that arm's ring.
+//
+// Making the ring faces identifiable and the hull robust:
+// - A ring's vertices are coplanar, so each arm gets an apex just in front of its ring's
+//   centre (2e-4 × margin × radius out): the ring face becomes a cone of n triangles around
+//   the apex, every ring vertex is a strict hull vertex, and the hull faces touching an apex
+//   are exactly the faces to remove. The apex stays behind the neighbouring faces, which tilt
+//   by at least the clearance margin over the junction's extent.
+// - Points are perturbed by 1e-9 of the junction's extent (a fixed hash of the point index),
+//   so no four are exactly coplanar (parallel equal rings would otherwise be); the output keeps
+//   the exact positions. The hull works on the rings' double-precision positions.
+// - Every hole is checked: its apex must carry n faces, each on one ring edge, all wound the way
+//   the tube expects. A junction failing any check (not seen on the examples) is closed
+//   conservatively instead: each arm's ring gets a flat cap, absorbed rings their own hull.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "welded_builder.hpp"
+
+namespace ramus::detail {
+namespace {
+
+// SplitMix64 (Steele, Lea, Flood 2014): a fixed hash for the perturbation, in [-1, 1].
+double hashUnit(std::uint64_t x) {
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    x ^= x >> 31;
+    return static_cast<double>(x >> 11) * (2.0 / 9007199254740992.0) - 1.0;
+}
+
+}  // namespace
+
+// Rings of the junction's arms (holes) and of the limbs inside it (plain points).
+void WeldBuilder::gatherJunction(NodeId cluster) {
+    hullRings_.clear();
+    const WeldSkeleton& s = skeleton_;
+    for (NodeId m = cluster; m != kNoNode;
+         m = junctions_.nextMember[static_cast<std::size_t>(m)]) {
+        const auto i = static_cast<std::size_t>(m);
+        auto visit = [&](std::int32_t l) {
+            const auto li = static_cast<std::size_t>(l);
+            const bool start = s.limbs[li].startKey == m;
+            if (!junctions_.absorbed[li]) {
+                hullRings_.push_back({start ? startRing_[li] : endRing_[li], true, start});
+            } else if (start) {  // inside: listed once, from its start
+                for (std::uint32_t d = discFirst_[li]; d < discFirst_[li + 1]; ++d) {
+                    hullRings_.push_back({discs_[d], false, true});
+                }
+            }
+        };
+        if (s.inLimb[i] >= 0) visit(s.inLimb[i]);
+        for (std::uint32_t k = 0; k < s.outCount[i]; ++k) visit(s.firstOut[i] + k);
+    }
+}
+
+// Hull of the gathered rings (only the absorbed ones unless `holes`); on success appends the
+// faces that are not ring discs and returns true.
+bool WeldBuilder::hullJunction(bool holes) {
+    points_.clear();
+    pointRing_.clear();
+    pointIndex_.clear();
+    const Vec3 origin = hullRings_.front().ring.center;
+    for (std::size_t r = 0; r < hullRings_.size(); ++r) {
+        const HullRing& h = hullRings_[r];
+        if (h.hole && !holes) continue;
+        const AngleTable& angles = table(h.ring.n);
+        for (int k = 0; k < h.ring.n; ++k) {
+            const auto i = static_cast<std::size_t>(k);
+            const double cs = angles.cosines[i];
+            const double sn = angles.sines[i];
+            points_.push_back(h.ring.center - origin + h.ring.radius * (cs * h.ring.e1 + sn * h.ring.e2));
+            pointRing_.push_back(static_cast<std::int32_t>(r));
+            pointIndex_.push_back(k);
+        }
+        if (h.hole) {
+            const double lift = 2e-4 * margin_ * h.ring.radius;
+            points_.push_back(h.ring.center - origin + lift * h.ring.outward);
+            pointRing_.push_back(static_cast<std::int32_t>(r));
+            pointIndex_.push_back(-1);
+        }
+    }
+    if (points_.size() < 4) return false;
+    double extent = 0.0;
+    for (const Vec3& p : points_) extent = std::max(extent, p.cwiseAbs().maxCoeff());
+    for (std::size_t p = 0; p < points_.size(); ++p) {
+        const std::uint64_t seed = 3 * static_cast<std::uint64_t>(p);
+        points_[p] += 1e-9 * extent * Vec3(hashUnit(seed), hashUnit(seed + 1), hashUnit(seed + 2));
+    }
+    if (!hull_.build(points_, 1e-11 * extent)) return false;
+
+    // Each hole: n faces at its apex, each on one ring edge, wound as the tube expects (a ring
+    // that starts its limb is seen from behind by the hull, one that ends it from the front).
+    std::vector<int>& coneFaces = coneFaces_;
+    coneFaces.assign(hullRings_.size(), 0);
+    for (const auto& face : hull_.faces()) {
+        for (int e = 0; e < 3; ++e) {
+            if (pointIndex_[face[e]] >= 0) continue;
+            const std::int32_t r = pointRing_[face[e]];
+            const std::uint32_t a = face[(e + 1) % 3];
+            const std::uint32_t b = face[(e + 2) % 3];
+            if (pointRing_[a] != r || pointRing_[b] != r) return false;
+            const int n = hullRings_[static_cast<std::size_t>(r)].ring.n;
+            const int ahead = hullRings_[static_cast<std::size_t>(r)].start ? 1 : n - 1;
+            if ((pointIndex_[a] + ahead) % n != pointIndex_[b]) return false;
+            ++coneFaces[static_cast<std::size_t>(r)];
+        }
+    }
+    for (std::size_t r = 0; r < hullRings_.size(); ++r) {
+        if (holes && hullRings_[r].hole && coneFaces[r] != hullRings_[r].ring.n) return false;
+    }
+    for (const auto& face : hull_.faces()) {
+        if (pointIndex_[face[0]] < 0 || pointIndex_[face[1]] < 0 || pointIndex_[face[2]] < 0) {
+            continue;
+        }
+        for (int e = 0; e < 3; ++e) mesh_.indices.push_back(seamVertex(face[e], face));
+    }
+    return true;
+}
+
+// The mesh vertex of hull point `point` in `face`: a ring's vertex 0 is taken as its seam copy
+// (u = 1) when the face's other corners on that ring lie past the ring's middle.
+std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
+                                      const std::array<std::uint32_t, 3>& face) const {
+    const std::int32_t r = pointRing_[point];
+    const RingRecord& ring = hullRings_[static_cast<std::size_t>(r)].ring;
+    const int k = pointIndex_[point];
+    if (k == 0) {
+        for (std::uint32_t other : face) {
+            if (other != point && pointRing_[other] == r && 2 * pointIndex_[other] > ring.n) {
+                return ring.base + static_cast<std::uint32_t>(ring.n);
+            }
+        }
+    }
+    return ring.base + static_cast<std::uint32_t>(k);
+}
+
+// Conservative close: flat caps on the arms' rings; the absorbed rings' hull on its own.
+void WeldBuilder::fallbackJunction() {
+    for (const HullRing& h : hullRings_) {
+        if (h.hole) emitCap(h.ring, -h.ring.outward, !h.start);
+    }
+    const bool anyAbsorbed = std::any_of(hullRings_.begin(), hullRings_.end(),
+                                         [](const HullRing& h) { return !h.hole; });
+    if (anyAbsorbed) hullJunction(false);  // appends nothing when it fails
+}
+
+void WeldBuilder::meshJunction(NodeId cluster) {
+    gatherJunction(cluster);
+    if (hullRings_.empty()) return;
+    const std::size_t before = mesh_.indices.size();
+    if (hullJunction(true)) return;
+    mesh_.indices.resize(before);
+    ++report_.fallbacks;
+    fallbackJunction();
+}
+
+}  // namespace ramus::detail

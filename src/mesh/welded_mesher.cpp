@@ -1,0 +1,299 @@
+// Based on: Bærentzen, Misztal, Wełnicka 2012, "Converting skeletal structures to quad
+// dominant meshes" (tubes between branch nodes, the nodes themselves meshed from the convex
+// hull of the meeting tubes' rings, as Blender's skin modifier does); tube rings, frames, radii,
+// segment rule and UVs as buildTubeMesh (seed 002 §4.4, src/mesh/tube_mesher.cpp).
+//
+// Pipeline: buildWeldSkeleton groups drawn edges into limbs (unbranched stretches between the
+// root, tips and branch nodes); solveWeldJunctions places each limb's rings at its branch
+// nodes; this file meshes every limb as a tube from ring to ring (flat fans at tips and the
+// base), and welded_junction_mesh.cpp closes every branch node with the convex hull of its
+// rings minus the rings' discs.
+//
+// Rules this file settles:
+// - Limb rings: one at each end (at the node for tips and the base, at the solver's offset at
+//   branch nodes) and one at every inner node farther than 5 % of its radius from those (curve
+//   reduction as buildTubeMesh). A ring between nodes faces its edge, a ring at a node the
+//   bisector of its two edges, as in buildTubeMesh.
+// - v runs on through branch nodes: every limb starts with the v its branch node has on the
+//   limb that ends there, so the texture continues along the main axis and starts in step on
+//   side branches.
+// - Rings of limbs taken into a junction are emitted only as hull points; vertices that end
+//   up inside the hull are dropped at the end.
+#include "ramus/welded_mesher.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ramus/error.hpp"
+#include "welded_builder.hpp"
+
+namespace ramus::detail {
+
+WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
+    : tree_(tree), params_(params) {
+    margin_ = std::isfinite(params.junctionMargin) ? std::clamp(params.junctionMargin, 0.01, 1.0)
+                                                   : 0.05;
+    const double aspect = params.tube.uvAspect > 0.0 && std::isfinite(params.tube.uvAspect)
+                              ? params.tube.uvAspect
+                              : 1.0;
+    vScale_ = 1.0 / (aspect * kPi);
+    skeleton_ = buildWeldSkeleton(tree, params.tube);
+    junctions_ = solveWeldJunctions(skeleton_, margin_);
+}
+
+const AngleTable& WeldBuilder::table(int n) {
+    const auto index = static_cast<std::size_t>(n);
+    if (tables_.size() <= index) tables_.resize(index + 1);
+    AngleTable& entry = tables_[index];
+    if (entry.cosines.empty()) {
+        entry = makeAngleTable(n, degToRad(params_.tube.startRotationDegrees));
+    }
+    return entry;
+}
+
+// The rings of limb `l` from its start to its end, with texture v (see the file comment).
+void WeldBuilder::gatherLimbRings(std::int32_t l) {
+    const WeldSkeleton& s = skeleton_;
+    const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
+    const auto li = static_cast<std::size_t>(l);
+    const bool startJunction = junctions_.cluster[static_cast<std::size_t>(limb.startKey)] >= 0;
+    const bool endJunction = junctions_.cluster[static_cast<std::size_t>(limb.endKey)] >= 0;
+    const double length = s.limbLength(limb);
+    const double s0 = startJunction ? junctions_.startOffset[li] : 0.0;
+    const double s1 = length - (endJunction ? junctions_.endOffset[li] : 0.0);
+    const std::uint32_t last = limb.count - 1;
+    auto atPoint = [&](std::uint32_t k) {
+        return RingPlace{s.pointPosition[limb.first + k], pointDirection(s, limb, k),
+                         s.pointRadius[limb.first + k], s.pointArc[limb.first + k]};
+    };
+    rings_.clear();
+    rings_.push_back({startJunction ? ringOnLimb(s, limb, false, s0) : atPoint(0), 0.0});
+    const double maxK = params_.tube.curveReduction;
+    for (std::uint32_t k = 1; k < last; ++k) {
+        const std::uint32_t p = limb.first + k;
+        const double spacing = 0.05 * s.pointRadius[p];
+        if (s.pointArc[p] <= s0 + spacing || s.pointArc[p] >= s1 - spacing) continue;
+        if (maxK > 0.0) {
+            const Vec3 in = (s.pointPosition[p] - rings_.back().place.center).normalized();
+            const Vec3 out = (s.pointPosition[p + 1] - s.pointPosition[p]).normalized();
+            if (in.dot(out) > maxK) continue;
+        }
+        rings_.push_back({atPoint(k), 0.0});
+    }
+    RingPlace end = endJunction ? ringOnLimb(s, limb, true, junctions_.endOffset[li]) : atPoint(last);
+    if (endJunction) end.normal = -end.normal;  // rings face along the limb
+    rings_.push_back({end, 0.0});
+
+    double v = keyV_[static_cast<std::size_t>(limb.startKey)];
+    double arc = 0.0;
+    double radius = s.pointRadius[limb.first];
+    for (LimbRing& ring : rings_) {
+        v -= (ring.place.arc - arc) * vScale_ / (radius + ring.place.radius);
+        ring.v = v;
+        arc = ring.place.arc;
+        radius = ring.place.radius;
+    }
+    keyV_[static_cast<std::size_t>(limb.endKey)] =
+        v - (length - arc) * vScale_ / (radius + s.pointRadius[limb.first + last]);
+}
+
+void WeldBuilder::meshLimb(std::int32_t l) {
+    const WeldLimb& limb = skeleton_.limbs[static_cast<std::size_t>(l)];
+    gatherLimbRings(l);
+    const int n = limb.segments;
+    Vec3 normal = rings_[0].place.normal;
+    Vec3 e1 = initialReference(normal);
+    RingRecord previous = emitRing(rings_[0].place, e1, static_cast<float>(rings_[0].v), n);
+    if (junctions_.cluster[static_cast<std::size_t>(limb.startKey)] >= 0) {
+        startRing_[static_cast<std::size_t>(l)] = previous;
+    } else {
+        emitCap(previous, -normal, false);  // the base of a tree part
+    }
+    for (std::size_t k = 1; k < rings_.size(); ++k) {
+        const RingPlace& place = rings_[k].place;
+        const Vec3 step = place.center - rings_[k - 1].place.center;
+        const double length = step.norm();
+        const Vec3 direction = length > 0.0 ? Vec3(step / length) : place.normal;
+        e1 = transportReference(e1, normal, direction, place.normal);
+        normal = place.normal;
+        const RingRecord current = emitRing(place, e1, static_cast<float>(rings_[k].v), n);
+        emitSides(previous.base, current.base, n);
+        previous = current;
+    }
+    if (junctions_.cluster[static_cast<std::size_t>(limb.endKey)] >= 0) {
+        previous.outward = -normal;
+        endRing_[static_cast<std::size_t>(l)] = previous;
+    } else {
+        emitCap(previous, normal, true);
+    }
+}
+
+// A limb inside a junction: one ring per point, as hull points only.
+void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
+    const WeldSkeleton& s = skeleton_;
+    const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
+    double v = keyV_[static_cast<std::size_t>(limb.startKey)];
+    for (std::uint32_t k = 0; k < limb.count; ++k) {
+        const std::uint32_t p = limb.first + k;
+        if (k > 0) {
+            v -= (s.pointArc[p] - s.pointArc[p - 1]) * vScale_ /
+                 (s.pointRadius[p - 1] + s.pointRadius[p]);
+        }
+        const RingPlace place{s.pointPosition[p], pointDirection(s, limb, k), s.pointRadius[p],
+                              s.pointArc[p]};
+        discs_.push_back(
+            emitRing(place, initialReference(place.normal), static_cast<float>(v), limb.segments));
+    }
+    keyV_[static_cast<std::size_t>(limb.endKey)] = v;
+}
+
+RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v, int n) {
+    const AngleTable& angles = table(n);
+    RingRecord ring;
+    ring.base = static_cast<std::uint32_t>(mesh_.positions.size());
+    ring.n = n;
+    ring.center = place.center;
+    ring.e1 = e1;
+    ring.e2 = place.normal.cross(e1);
+    ring.outward = place.normal;
+    ring.radius = place.radius;
+    const Vec3f c = place.center.cast<float>();
+    const Vec3f a = e1.cast<float>();
+    const Vec3f b = ring.e2.cast<float>();
+    const auto r = static_cast<float>(place.radius);
+    for (std::size_t i = 0; i < angles.cosines.size(); ++i) {
+        const float cs = angles.cosines[i];
+        const float sn = angles.sines[i];
+        const Vec3f radial = cs * a + sn * b;
+        const Vec3f tangent = cs * b - sn * a;  // direction of increasing u
+        mesh_.positions.push_back(c + r * radial);
+        mesh_.normals.push_back(radial);
+        mesh_.tangents.emplace_back(tangent.x(), tangent.y(), tangent.z(), 1.0f);
+        mesh_.uvs.emplace_back(angles.us[i], v);
+    }
+    return ring;
+}
+
+// Quads between ring `a` (behind) and ring `b` (ahead), counter-clockwise seen from outside.
+void WeldBuilder::emitSides(std::uint32_t a, std::uint32_t b, int n) {
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
+        mesh_.indices.insert(mesh_.indices.end(), {a + i, a + i + 1, b + i + 1, a + i, b + i + 1,
+                                                   b + i});
+    }
+}
+
+// Flat fan facing `normal` around a centre vertex, as buildTubeMesh's caps: own vertices
+// (positions copied bit-exactly from the ring), disc UVs, tangent e1. `tip`: the ring faces
+// the same way as the cap (else the cap closes the ring's back).
+void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip) {
+    const AngleTable& angles = table(ring.n);
+    const auto n = static_cast<std::uint32_t>(ring.n);
+    const auto centre = static_cast<std::uint32_t>(mesh_.positions.size());
+    const Vec3f nf = normal.cast<float>();
+    const Vec4f tangent(static_cast<float>(ring.e1.x()), static_cast<float>(ring.e1.y()),
+                        static_cast<float>(ring.e1.z()), 1.0f);
+    const float vSign = tip ? -0.5f : 0.5f;  // keeps cross(n, e1) pointing to decreasing v
+    mesh_.positions.push_back(ring.center.cast<float>());
+    mesh_.uvs.emplace_back(0.5f, 0.5f);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        mesh_.positions.push_back(mesh_.positions[ring.base + i]);
+        mesh_.uvs.emplace_back(0.5f + 0.5f * angles.cosines[i], 0.5f + vSign * angles.sines[i]);
+    }
+    mesh_.normals.insert(mesh_.normals.end(), n + 1, nf);
+    mesh_.tangents.insert(mesh_.tangents.end(), n + 1, tangent);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t a = centre + 1 + i;
+        const std::uint32_t b = centre + 1 + (i + 1 == n ? 0 : i + 1);
+        mesh_.indices.insert(mesh_.indices.end(), {centre, tip ? a : b, tip ? b : a});
+    }
+}
+
+// Removes vertices no triangle uses (rings of absorbed limbs inside a hull), keeping order.
+void WeldBuilder::dropUnusedVertices() {
+    std::vector<std::uint32_t> remap(mesh_.positions.size(), 0);
+    for (std::uint32_t i : mesh_.indices) remap[i] = 1;
+    std::uint32_t kept = 0;
+    for (std::size_t i = 0; i < remap.size(); ++i) {
+        if (remap[i] == 0) continue;
+        remap[i] = kept;
+        mesh_.positions[kept] = mesh_.positions[i];
+        mesh_.normals[kept] = mesh_.normals[i];
+        mesh_.tangents[kept] = mesh_.tangents[i];
+        mesh_.uvs[kept] = mesh_.uvs[i];
+        ++kept;
+    }
+    for (std::uint32_t& i : mesh_.indices) i = remap[i];
+    mesh_.positions.resize(kept);
+    mesh_.normals.resize(kept);
+    mesh_.tangents.resize(kept);
+    mesh_.uvs.resize(kept);
+}
+
+Mesh WeldBuilder::build(WeldReport* report) {
+    mesh_.name = "tree";
+    const WeldSkeleton& s = skeleton_;
+    const std::size_t limbs = s.limbs.size();
+    keyV_.assign(s.rep.size(), 0.0);
+    startRing_.assign(limbs, {});
+    endRing_.assign(limbs, {});
+    discFirst_.assign(limbs + 1, 0);
+    // Upper bounds without junctions: a ring per point plus caps; junctions add about as
+    // many triangles as their rings have vertices.
+    std::size_t vertices = 0;
+    std::size_t triangles = 0;
+    for (const WeldLimb& limb : s.limbs) {
+        const auto n = static_cast<std::size_t>(limb.segments);
+        vertices += (limb.count + 2) * (n + 1);
+        triangles += 2 * n * (limb.count + 1);
+    }
+    mesh_.positions.reserve(vertices);
+    mesh_.normals.reserve(vertices);
+    mesh_.tangents.reserve(vertices);
+    mesh_.uvs.reserve(vertices);
+    mesh_.indices.reserve(3 * triangles);
+    for (std::size_t l = 0; l < limbs; ++l) {
+        const auto id = static_cast<std::int32_t>(l);
+        if (junctions_.absorbed[l]) {
+            meshAbsorbedLimb(id);
+        } else {
+            meshLimb(id);
+        }
+        discFirst_[l + 1] = static_cast<std::uint32_t>(discs_.size());
+    }
+    for (NodeId cluster : junctions_.junctions) meshJunction(cluster);
+    if (junctions_.absorbedLimbs + junctions_.merges > 0) dropUnusedVertices();
+    if (!mesh_.indices.empty()) {
+        mesh_.materials.push_back(params_.tube.material);
+        mesh_.primitives.push_back(
+            MeshPrimitive{0, static_cast<std::uint32_t>(mesh_.indices.size()), 0, "bark"});
+    }
+    if (report != nullptr) {
+        report_.junctions = junctions_.junctions.size();
+        report_.merges = junctions_.merges;
+        report_.absorbedLimbs = junctions_.absorbedLimbs;
+        report_.crowded = junctions_.crowded;
+        report_.crossings = junctions_.crossings;
+        for (std::size_t i = 0; i < s.rep.size(); ++i) {
+            if (s.key[i] && s.inLimb[i] < 0) ++report_.components;
+        }
+        *report = report_;
+    }
+    return std::move(mesh_);
+}
+
+}  // namespace ramus::detail
+
+namespace ramus {
+
+Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
+                         WeldReport* report) {
+    if (report != nullptr) *report = WeldReport{};
+    if (tree.size() < 2) {
+        Mesh empty;
+        empty.name = "tree";
+        return empty;
+    }
+    return detail::WeldBuilder(tree, params).build(report);
+}
+
+}  // namespace ramus

@@ -1,0 +1,173 @@
+// The limb graph of the welded mesher (see welded_skeleton.hpp): one pass merges coincident
+// nodes, a second groups drawn edges into limbs between key nodes. Radii, the trunk multiplier
+// and the segment rule are those of buildTubeMesh (src/mesh/tube_mesher.cpp), so a welded
+// branch's rings lie on the same tube.
+#include <algorithm>
+#include <cmath>
+
+#include "welded_skeleton.hpp"
+
+namespace ramus::detail {
+namespace {
+
+constexpr int kMaxSegments = 4096;
+
+// The tube mesher's segment rule: min + round((max - min) · r / r_max).
+int segmentsFor(const TubeMeshParams& params, double radius, double maxRadius) {
+    const int lo = std::clamp(params.minSegments, 3, kMaxSegments);
+    const int hi = std::clamp(params.maxSegments, lo, kMaxSegments);
+    if (!(maxRadius > 0.0)) return lo;
+    const double t = std::clamp(radius / maxRadius, 0.0, 1.0);
+    return lo + static_cast<int>((hi - lo) * t + 0.5);
+}
+
+// Merges every node closer than the merge distance to its (merged) parent into it, counts the
+// drawn edges at every remaining node and marks the key nodes.
+void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<std::uint8_t>& incoming) {
+    const std::size_t n = tree.size();
+    const double merge2 = s.mergeDistance * s.mergeDistance;
+    s.rep.resize(n);
+    s.degree.assign(n, 0);
+    incoming.assign(n, 0);
+    s.rep[0] = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+        const BranchNode& node = tree.nodes()[i];
+        s.rep[i] = static_cast<NodeId>(i);
+        if (node.hidden) continue;
+        const NodeId p = s.rep[static_cast<std::size_t>(node.parent)];
+        if ((node.position - tree.node(p).position).squaredNorm() <= merge2) {
+            s.rep[i] = p;
+            continue;
+        }
+        incoming[i] = 1;
+        ++s.degree[i];
+        ++s.degree[static_cast<std::size_t>(p)];
+    }
+    s.key.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool chainInterior = s.degree[i] == 2 && incoming[i] != 0;
+        s.key[i] = s.rep[i] == static_cast<NodeId>(i) && s.degree[i] > 0 && !chainInterior;
+    }
+}
+
+// Radius at the start of the limb from key `k` to child `c`, as buildTubeMesh's rings: the
+// root's chain starts with trunk × root radius; a chain running on through a branch node (the
+// first child, same branch depth) keeps the node's radius; other children start with their own.
+double startRadius(const BranchTree& tree, const std::vector<double>& radii, double trunk,
+                   NodeId k, NodeId c) {
+    const BranchNode& key = tree.node(k);
+    const BranchNode& child = tree.node(c);
+    const bool continues = child.parent == k && key.firstChild == c &&
+                           child.branchDepth == key.branchDepth && !key.hidden;
+    if (continues) return k == 0 ? trunk * radii[0] : radii[static_cast<std::size_t>(k)];
+    return radii[static_cast<std::size_t>(c)];
+}
+
+}  // namespace
+
+WeldSkeleton buildWeldSkeleton(const BranchTree& tree, const TubeMeshParams& params) {
+    WeldSkeleton s;
+    const std::size_t n = tree.size();
+    if (n < 2) return s;
+    const Aabb box = tree.bounds();
+    s.mergeDistance = 1e-6 * std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
+    std::vector<std::uint8_t> incoming;
+    mergeNodes(tree, s, incoming);
+
+    // Children of every remaining node (CSR, by child id).
+    std::vector<std::uint32_t> childFirst(n + 1, 0);
+    for (std::size_t i = 1; i < n; ++i) {
+        if (incoming[i]) ++childFirst[static_cast<std::size_t>(s.rep[tree.nodes()[i].parent]) + 1];
+    }
+    for (std::size_t i = 0; i < n; ++i) childFirst[i + 1] += childFirst[i];
+    std::vector<NodeId> children(childFirst[n]);
+    std::vector<std::uint32_t> fill(childFirst.begin(), childFirst.end() - 1);
+    for (std::size_t i = 1; i < n; ++i) {
+        if (incoming[i]) {
+            children[fill[static_cast<std::size_t>(s.rep[tree.nodes()[i].parent])]++] =
+                static_cast<NodeId>(i);
+        }
+    }
+
+    const std::vector<double> radii = computeEdgeRadii(tree, params);
+    const double trunk = params.trunkMultiplier > 0.0 && std::isfinite(params.trunkMultiplier)
+                             ? params.trunkMultiplier
+                             : 1.0;
+    s.inLimb.assign(n, -1);
+    s.firstOut.assign(n, -1);
+    s.outCount.assign(n, 0);
+    s.limbs.reserve(childFirst[n] / 2 + 1);
+    s.pointPosition.reserve(childFirst[n] + childFirst[n] / 2 + 2);
+    // Limbs from every key node along each child until the next key node. Keys are visited in
+    // id order, so a limb's start key always ends an earlier limb (parents precede children).
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!s.key[k]) continue;
+        s.outCount[k] = childFirst[k + 1] - childFirst[k];
+        if (s.outCount[k] > 0) s.firstOut[k] = static_cast<std::int32_t>(s.limbs.size());
+        for (std::uint32_t c = childFirst[k]; c < childFirst[k + 1]; ++c) {
+            WeldLimb limb;
+            limb.startKey = static_cast<NodeId>(k);
+            limb.first = static_cast<std::uint32_t>(s.pointPosition.size());
+            NodeId x = children[c];
+            s.pointPosition.push_back(tree.node(limb.startKey).position);
+            s.pointRadius.push_back(startRadius(tree, radii, trunk, limb.startKey, x));
+            s.pointNode.push_back(limb.startKey);
+            s.pointArc.push_back(0.0);
+            for (;;) {
+                const Vec3& p = tree.node(x).position;
+                s.pointArc.push_back(s.pointArc.back() + (p - s.pointPosition.back()).norm());
+                s.pointPosition.push_back(p);
+                s.pointRadius.push_back(radii[static_cast<std::size_t>(x)]);
+                s.pointNode.push_back(x);
+                if (s.key[static_cast<std::size_t>(x)]) break;
+                x = children[childFirst[static_cast<std::size_t>(x)]];
+            }
+            limb.endKey = x;
+            limb.count = static_cast<std::uint32_t>(s.pointPosition.size()) - limb.first;
+            s.inLimb[static_cast<std::size_t>(x)] = static_cast<std::int32_t>(s.limbs.size());
+            s.limbs.push_back(limb);
+        }
+    }
+    for (double r : s.pointRadius) s.maxRadius = std::max(s.maxRadius, r);
+    for (WeldLimb& limb : s.limbs) {
+        limb.segments = segmentsFor(params, s.pointRadius[limb.first], s.maxRadius);
+    }
+    return s;
+}
+
+RingPlace ringOnLimb(const WeldSkeleton& s, const WeldLimb& limb, bool fromEnd, double t) {
+    const double length = s.limbLength(limb);
+    const double arc = std::clamp(fromEnd ? length - t : t, 0.0, length);
+    std::uint32_t k = 0;
+    if (fromEnd) {
+        k = limb.count - 2;
+        while (k > 0 && s.pointArc[limb.first + k] > arc) --k;
+    } else {
+        while (k + 2 < limb.count && s.pointArc[limb.first + k + 1] < arc) ++k;
+    }
+    const std::uint32_t a = limb.first + k;
+    const double span = s.pointArc[a + 1] - s.pointArc[a];
+    const double u = std::clamp((arc - s.pointArc[a]) / span, 0.0, 1.0);
+    const Vec3 direction = (s.pointPosition[a + 1] - s.pointPosition[a]) / span;
+    RingPlace place;
+    place.center = s.pointPosition[a] + u * (s.pointPosition[a + 1] - s.pointPosition[a]);
+    place.radius = s.pointRadius[a] + u * (s.pointRadius[a + 1] - s.pointRadius[a]);
+    place.normal = fromEnd ? Vec3(-direction) : direction;
+    place.arc = arc;
+    return place;
+}
+
+Vec3 pointDirection(const WeldSkeleton& s, const WeldLimb& limb, std::uint32_t k) {
+    const std::uint32_t p = limb.first + k;
+    const Vec3 in = k > 0 ? Vec3((s.pointPosition[p] - s.pointPosition[p - 1]).normalized())
+                          : Vec3::Zero();
+    const Vec3 out = k + 1 < limb.count
+                         ? Vec3((s.pointPosition[p + 1] - s.pointPosition[p]).normalized())
+                         : Vec3::Zero();
+    const Vec3 sum = in + out;
+    const double length2 = sum.squaredNorm();
+    if (length2 > 1e-12) return sum / std::sqrt(length2);
+    return k > 0 ? in : out;
+}
+
+}  // namespace ramus::detail

@@ -1,0 +1,80 @@
+// The welded mesher's view of a BranchTree: coincident nodes merged, drawn edges grouped into
+// limbs (unbranched stretches between key nodes), and the junction solver that places each
+// limb's end rings. Internal to src/mesh (welded_*.cpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ramus/branch_tree.hpp"
+#include "ramus/tube_mesher.hpp"
+
+namespace ramus::detail {
+
+/// An unbranched stretch of drawn edges from key node `startKey` (towards the root) to key
+/// node `endKey`. Key nodes: part roots (the root, nodes after a hidden edge), tips and branch
+/// nodes (≥ 3 drawn edges).
+struct WeldLimb {
+    NodeId startKey = kNoNode;
+    NodeId endKey = kNoNode;
+    std::uint32_t first = 0;  ///< first point in WeldSkeleton's point arrays
+    std::uint32_t count = 0;  ///< points (≥ 2): startKey, inner nodes, endKey
+    int segments = 3;         ///< ring vertices of this limb
+};
+
+struct WeldSkeleton {
+    std::vector<NodeId> rep;             ///< per node: the node it was merged into (or itself)
+    std::vector<std::uint32_t> degree;   ///< per node: drawn edges at it (merged nodes: 0)
+    std::vector<std::uint8_t> key;       ///< per node: 1 = key node
+    std::vector<std::int32_t> inLimb;    ///< per key node: the limb ending there, or -1
+    std::vector<std::int32_t> firstOut;  ///< per key node: first limb starting there, or -1
+    std::vector<std::uint32_t> outCount; ///< per key node: limbs starting there (consecutive)
+    std::vector<WeldLimb> limbs;         ///< ordered so a limb's start key ends an earlier limb
+    std::vector<Vec3> pointPosition;     ///< per limb point
+    std::vector<double> pointArc;        ///< arc length from the limb's start
+    std::vector<double> pointRadius;     ///< tube radius there (as buildTubeMesh's rings)
+    std::vector<NodeId> pointNode;       ///< the tree node of each limb point
+    double maxRadius = 0.0;
+    double mergeDistance = 0.0;
+
+    double limbLength(const WeldLimb& limb) const {
+        return pointArc[limb.first + limb.count - 1];
+    }
+};
+
+/// Groups the drawn edges of `tree` into limbs with the radii and segment counts of
+/// buildTubeMesh for `params`.
+WeldSkeleton buildWeldSkeleton(const BranchTree& tree, const TubeMeshParams& params);
+
+/// A ring on a limb, `t` arc length from one of its ends; `normal` points away from that end.
+struct RingPlace {
+    Vec3 center;
+    Vec3 normal;
+    double radius;
+    double arc;  ///< arc length from the limb's start
+};
+RingPlace ringOnLimb(const WeldSkeleton& skeleton, const WeldLimb& limb, bool fromEnd, double t);
+
+/// Unit direction of the limb at point k (k inside: bisector of its two edges).
+Vec3 pointDirection(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uint32_t k);
+
+/// Where the junction solver put things.
+struct WeldJunctions {
+    std::vector<std::int32_t> cluster;     ///< per node: its junction (a member node id) or -1
+    std::vector<std::int32_t> nextMember;  ///< per node: next node of the same junction, or -1
+    std::vector<NodeId> junctions;         ///< one member (the smallest id) per junction
+    std::vector<double> startOffset;       ///< per limb: ring distance from its start key
+    std::vector<double> endOffset;         ///< per limb: ring distance from its end key
+    std::vector<std::uint8_t> absorbed;    ///< per limb: 1 = lies inside a junction's hull
+    std::size_t merges = 0;
+    std::size_t absorbedLimbs = 0;
+    std::size_t crowded = 0;    ///< junctions at their size limit with rings that do not fit
+    std::size_t crossings = 0;  ///< limbs too short for both end rings (rings pass each other)
+};
+
+/// Places every limb's end rings so that at each junction no ring's plane cuts another
+/// branch's ring (`margin` × radius of clearance), merging junctions and absorbing end limbs
+/// where the limbs are too short for that.
+WeldJunctions solveWeldJunctions(const WeldSkeleton& skeleton, double margin);
+
+}  // namespace ramus::detail

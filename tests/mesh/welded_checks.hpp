@@ -1,0 +1,74 @@
+// Checks of the welded tree meshes: topology after welding by position (closed, oriented
+// 2-manifold, Euler characteristic, components), volume, degenerate triangles, unit normals,
+// triangle–triangle self-intersections over a grid, and distance to the branch capsules.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ramus/branch_tree.hpp"
+#include "ramus/mesh.hpp"
+
+namespace ramus::test {
+
+/// Topology of `mesh` with vertices of bit-identical positions taken as one (seam and cap
+/// copies repeat ring positions exactly).
+struct Topology {
+    std::size_t vertices = 0;  ///< distinct positions used by triangles
+    std::size_t edges = 0;     ///< undirected
+    std::size_t faces = 0;
+    std::size_t components = 0;
+    /// Every directed edge once and its reverse once: each edge has exactly two faces, and
+    /// they are wound consistently.
+    bool closedOriented = false;
+    long long euler() const {
+        return static_cast<long long>(vertices) - static_cast<long long>(edges) +
+               static_cast<long long>(faces);
+    }
+};
+Topology analyzeTopology(const Mesh& mesh);
+
+/// Σ over triangles of a·(b×c)/6: the enclosed volume of a closed outward mesh.
+double signedVolume(const Mesh& mesh);
+
+/// Smallest 2·area / (longest edge)² over all triangles (0 for a degenerate one; an
+/// equilateral triangle has √3/2).
+double smallestTriangleShape(const Mesh& mesh);
+
+/// Largest | |normal| − 1 | (infinite if any normal is not finite).
+double worstNormalLength(const Mesh& mesh);
+
+/// Pairs of triangles that share no vertex position and intersect (edge of one through the
+/// other's interior), found over a uniform grid. Returns the count, up to `limit`.
+std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit = 10);
+
+/// Signed distance to the union of the tree's tapered capsules (round cones between the
+/// nodes of every drawn edge, radii from `radii` as buildTubeMesh uses them); `radius`: of the
+/// nearest capsule at the nearest point of its axis; `scale`: the largest such radius among the
+/// capsules whose surface is within their own radius of the point (the local branch size: at
+/// a junction, the thickest branch meeting there).
+struct CapsuleDistance {
+    double distance = 0.0;
+    double radius = 0.0;
+    double scale = 0.0;
+};
+class CapsuleUnion {
+public:
+    CapsuleUnion(const BranchTree& tree, const std::vector<double>& radii, double rootRadius);
+    CapsuleDistance at(const Vec3& p) const;
+    std::size_t size() const { return a_.size(); }
+
+private:
+    std::vector<Vec3> a_, b_;
+    std::vector<double> ra_, rb_;
+};
+
+/// Generalized winding number of `mesh` at `p` (≈ 1 inside a closed outward mesh, 0 outside).
+double windingNumber(const Mesh& mesh, const Vec3& p);
+
+/// Writes `mesh` as <$RAMUS_TEST_OUTPUT>/welded_<name>.glb when the variable is set.
+void writeWeldedGlb(const Mesh& mesh, const std::string& name);
+
+}  // namespace ramus::test
