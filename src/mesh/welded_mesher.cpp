@@ -133,11 +133,17 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
     const WeldSkeleton& s = skeleton_;
     const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
     double v = keyV_[static_cast<std::size_t>(limb.startKey)];
+    // The start node's ring is already there when the limb ending at it is absorbed too (on a
+    // straight chain it would repeat it bit for bit and pinch the hull).
+    const std::int32_t in = s.inLimb[static_cast<std::size_t>(limb.startKey)];
+    const bool startShown = in >= 0 && junctions_.absorbed[static_cast<std::size_t>(in)];
     for (std::uint32_t k = 0; k < limb.count; ++k) {
         const std::uint32_t p = limb.first + k;
         if (k > 0) {
             v -= (s.pointArc[p] - s.pointArc[p - 1]) * vScale_ /
                  (s.pointRadius[p - 1] + s.pointRadius[p]);
+        } else if (startShown) {
+            continue;
         }
         const RingPlace place{s.pointPosition[p], pointDirection(s, limb, k), s.pointRadius[p],
                               s.pointArc[p]};

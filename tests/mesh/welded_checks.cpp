@@ -141,7 +141,8 @@ double worstNormalLength(const Mesh& mesh) {
     return worst;
 }
 
-std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit) {
+std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit,
+                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs) {
     const std::size_t count = mesh.triangleCount();
     if (count == 0) return 0;
     const std::vector<std::uint32_t> id = weldIds(mesh);
@@ -187,7 +188,9 @@ std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit) {
                 for (int a = 0; a < 3; ++a)
                     for (int b = 0; b < 3; ++b)
                         shared = shared || id[mesh.indices[3 * s + a]] == id[mesh.indices[3 * t + b]];
-                if (!shared && trianglesIntersect(mesh, s, t) && ++found >= limit) return found;
+                if (shared || !trianglesIntersect(mesh, s, t)) continue;
+                if (pairs != nullptr) pairs->emplace_back(s, t);
+                if (++found >= limit) return found;
             }
         }
     }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ramus/branch_tree.hpp"
@@ -42,7 +43,8 @@ double worstNormalLength(const Mesh& mesh);
 
 /// Pairs of triangles that share no vertex position and intersect (edge of one through the
 /// other's interior), found over a uniform grid. Returns the count, up to `limit`.
-std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit = 10);
+std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit = 10,
+                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr);
 
 /// Signed distance to the union of the tree's tapered capsules (round cones between the
 /// nodes of every drawn edge, radii from `radii` as buildTubeMesh uses them); `radius`: of the
