@@ -15,11 +15,11 @@
 
 namespace {
 
+using ramus::BranchTree;
+using ramus::Vec3;
 using ramus::bench::binaryTree;
 using ramus::bench::monopodialTree;
 using ramus::bench::reportMesh;
-using ramus::BranchTree;
-using ramus::Vec3;
 
 void BM_TubeMesh(benchmark::State& state, BranchTree (*makeTree)(std::int64_t),
                  double curveReduction) {

@@ -38,7 +38,8 @@ BENCHMARK_CAPTURE(BM_WeldedMesh, monopodial, ramus::bench::monopodialTree)
     ->Unit(benchmark::kMillisecond);
 
 BranchTree tree3d(std::int64_t derivations) {
-    const ramus::LSystem system = ramus::loadLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys");
+    const ramus::LSystem system =
+        ramus::loadLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys");
     ramus::DeriveOptions options;
     options.derivations = static_cast<int>(derivations);
     const ramus::ModuleString word = ramus::deriveLSystem(system, options);

@@ -33,8 +33,8 @@ struct WeldReport {
     /// Limbs between two junctions too short for both end rings, left overlapping (the
     /// surface stays closed but intersects itself there).
     std::size_t crossings = 0;
-    std::size_t fallbacks = 0;      ///< junctions left as separately capped tubes (should be 0)
-    std::size_t components = 0;     ///< closed surfaces (1 per tree unless hidden edges split it)
+    std::size_t fallbacks = 0;   ///< junctions left as separately capped tubes (should be 0)
+    std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
 };
 
 /// Meshes `tree` as closed surfaces: one per part of the tree connected by drawn edges

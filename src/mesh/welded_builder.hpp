@@ -58,8 +58,8 @@ private:
     WeldJunctions junctions_;
     double margin_ = 0.05;
     double vScale_ = 1.0;
-    std::vector<AngleTable> tables_;  // by n - 3, built on first use
-    std::vector<double> keyV_;        // per node: texture v at key nodes
+    std::vector<AngleTable> tables_;               // by n - 3, built on first use
+    std::vector<double> keyV_;                     // per node: texture v at key nodes
     std::vector<RingRecord> startRing_, endRing_;  // per limb: its rings at junctions
     std::vector<std::uint32_t> discFirst_;         // per limb + 1: absorbed rings in discs_
     std::vector<RingRecord> discs_;
@@ -70,13 +70,13 @@ private:
     // Junction scratch, reused.
     struct HullRing {
         RingRecord ring;
-        bool hole;  // an arm's ring (its disc is cut out) or an absorbed ring (plain points)
-        bool start; // the ring starts its limb (else it ends it)
+        bool hole;   // an arm's ring (its disc is cut out) or an absorbed ring (plain points)
+        bool start;  // the ring starts its limb (else it ends it)
     };
     std::vector<HullRing> hullRings_;
     std::vector<Vec3> points_;
-    std::vector<std::int32_t> pointRing_;  // per hull point: index into hullRings_
-    std::vector<std::int32_t> pointIndex_; // per hull point: vertex in its ring, -1 = apex
+    std::vector<std::int32_t> pointRing_;   // per hull point: index into hullRings_
+    std::vector<std::int32_t> pointIndex_;  // per hull point: vertex in its ring, -1 = apex
     std::vector<int> coneFaces_;
     ConvexHull hull_;
 };

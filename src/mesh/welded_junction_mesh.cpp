@@ -43,8 +43,7 @@ double hashUnit(std::uint64_t x) {
 void WeldBuilder::gatherJunction(NodeId cluster) {
     hullRings_.clear();
     const WeldSkeleton& s = skeleton_;
-    for (NodeId m = cluster; m != kNoNode;
-         m = junctions_.nextMember[static_cast<std::size_t>(m)]) {
+    for (NodeId m = cluster; m != kNoNode; m = junctions_.nextMember[static_cast<std::size_t>(m)]) {
         const auto i = static_cast<std::size_t>(m);
         auto visit = [&](std::int32_t l) {
             const auto li = static_cast<std::size_t>(l);
@@ -77,7 +76,8 @@ bool WeldBuilder::hullJunction(bool holes) {
             const auto i = static_cast<std::size_t>(k);
             const double cs = angles.cosines[i];
             const double sn = angles.sines[i];
-            points_.push_back(h.ring.center - origin + h.ring.radius * (cs * h.ring.e1 + sn * h.ring.e2));
+            points_.push_back(h.ring.center - origin +
+                              h.ring.radius * (cs * h.ring.e1 + sn * h.ring.e2));
             pointRing_.push_back(static_cast<std::int32_t>(r));
             pointIndex_.push_back(k);
         }

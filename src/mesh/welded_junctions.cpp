@@ -60,9 +60,9 @@ private:
     const WeldSkeleton& s_;
     double margin_;
     WeldJunctions out_;
-    std::vector<NodeId> parent_;     // union-find over nodes of junctions
-    std::vector<NodeId> tail_;       // per cluster root: last member
-    std::vector<std::uint32_t> members_;  // per cluster root: member nodes
+    std::vector<NodeId> parent_;              // union-find over nodes of junctions
+    std::vector<NodeId> tail_;                // per cluster root: last member
+    std::vector<std::uint32_t> members_;      // per cluster root: member nodes
     std::vector<std::uint32_t> discs_count_;  // per cluster root: points of absorbed limbs
     std::vector<std::uint8_t> solved_;
     std::vector<Arm> arms_;
@@ -178,8 +178,9 @@ std::int32_t JunctionSolver::placeRings(bool clamp) {
                 if (front > worst) worst = front, worstCos = isArm ? cosine : 0.0;
             };
             for (std::size_t j = 0; j < arms_.size(); ++j) {
-                if (j != i) consider(arms_[j].place.center, arms_[j].place.normal,
-                                     arms_[j].place.radius, true);
+                if (j != i)
+                    consider(arms_[j].place.center, arms_[j].place.normal, arms_[j].place.radius,
+                             true);
             }
             for (const Disc& d : discs_) consider(d.center, d.normal, d.radius, false);
             const double tolerance = 1e-9 * arms_[i].radius;
@@ -207,8 +208,7 @@ std::int32_t JunctionSolver::placeRings(bool clamp) {
 
 bool JunctionSolver::fitsBothEnds(std::int32_t limb) const {
     const auto i = static_cast<std::size_t>(limb);
-    return out_.startOffset[i] + out_.endOffset[i] + gap(limb) <=
-           s_.limbLength(s_.limbs[i]);
+    return out_.startOffset[i] + out_.endOffset[i] + gap(limb) <= s_.limbLength(s_.limbs[i]);
 }
 
 bool JunctionSolver::canJoin(NodeId cluster, NodeId other, std::int32_t limb) const {

@@ -31,8 +31,8 @@ namespace ramus::detail {
 
 WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
     : tree_(tree), params_(params) {
-    margin_ = std::isfinite(params.junctionMargin) ? std::clamp(params.junctionMargin, 0.01, 1.0)
-                                                   : 0.05;
+    margin_ =
+        std::isfinite(params.junctionMargin) ? std::clamp(params.junctionMargin, 0.01, 1.0) : 0.05;
     const double aspect = params.tube.uvAspect > 0.0 && std::isfinite(params.tube.uvAspect)
                               ? params.tube.uvAspect
                               : 1.0;
@@ -80,7 +80,8 @@ void WeldBuilder::gatherLimbRings(std::int32_t l) {
         }
         rings_.push_back({atPoint(k), 0.0});
     }
-    RingPlace end = endJunction ? ringOnLimb(s, limb, true, junctions_.endOffset[li]) : atPoint(last);
+    RingPlace end =
+        endJunction ? ringOnLimb(s, limb, true, junctions_.endOffset[li]) : atPoint(last);
     if (endJunction) end.normal = -end.normal;  // rings face along the limb
     rings_.push_back({end, 0.0});
 
@@ -183,8 +184,8 @@ RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v
 // Quads between ring `a` (behind) and ring `b` (ahead), counter-clockwise seen from outside.
 void WeldBuilder::emitSides(std::uint32_t a, std::uint32_t b, int n) {
     for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
-        mesh_.indices.insert(mesh_.indices.end(), {a + i, a + i + 1, b + i + 1, a + i, b + i + 1,
-                                                   b + i});
+        mesh_.indices.insert(mesh_.indices.end(),
+                             {a + i, a + i + 1, b + i + 1, a + i, b + i + 1, b + i});
     }
 }
 

@@ -2,10 +2,10 @@
 // nodes, a second groups drawn edges into limbs between key nodes. Radii, the trunk multiplier
 // and the segment rule are those of buildTubeMesh (src/mesh/tube_mesher.cpp), so a welded
 // branch's rings lie on the same tube.
+#include "welded_skeleton.hpp"
+
 #include <algorithm>
 #include <cmath>
-
-#include "welded_skeleton.hpp"
 
 namespace ramus::detail {
 namespace {
@@ -53,8 +53,8 @@ void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<std::uint8_
 // Radius at the start of the limb from key `k` to child `c`, as buildTubeMesh's rings: the
 // root's chain starts with trunk × root radius; a chain running on through a branch node (the
 // first child, same branch depth) keeps the node's radius; other children start with their own.
-double startRadius(const BranchTree& tree, const std::vector<double>& radii, double trunk,
-                   NodeId k, NodeId c) {
+double startRadius(const BranchTree& tree, const std::vector<double>& radii, double trunk, NodeId k,
+                   NodeId c) {
     const BranchNode& key = tree.node(k);
     const BranchNode& child = tree.node(c);
     const bool continues = child.parent == k && key.firstChild == c &&
@@ -159,8 +159,8 @@ RingPlace ringOnLimb(const WeldSkeleton& s, const WeldLimb& limb, bool fromEnd, 
 
 Vec3 pointDirection(const WeldSkeleton& s, const WeldLimb& limb, std::uint32_t k) {
     const std::uint32_t p = limb.first + k;
-    const Vec3 in = k > 0 ? Vec3((s.pointPosition[p] - s.pointPosition[p - 1]).normalized())
-                          : Vec3::Zero();
+    const Vec3 in =
+        k > 0 ? Vec3((s.pointPosition[p] - s.pointPosition[p - 1]).normalized()) : Vec3::Zero();
     const Vec3 out = k + 1 < limb.count
                          ? Vec3((s.pointPosition[p + 1] - s.pointPosition[p]).normalized())
                          : Vec3::Zero();

@@ -23,23 +23,21 @@ struct WeldLimb {
 };
 
 struct WeldSkeleton {
-    std::vector<NodeId> rep;             ///< per node: the node it was merged into (or itself)
-    std::vector<std::uint32_t> degree;   ///< per node: drawn edges at it (merged nodes: 0)
-    std::vector<std::uint8_t> key;       ///< per node: 1 = key node
-    std::vector<std::int32_t> inLimb;    ///< per key node: the limb ending there, or -1
-    std::vector<std::int32_t> firstOut;  ///< per key node: first limb starting there, or -1
-    std::vector<std::uint32_t> outCount; ///< per key node: limbs starting there (consecutive)
-    std::vector<WeldLimb> limbs;         ///< ordered so a limb's start key ends an earlier limb
-    std::vector<Vec3> pointPosition;     ///< per limb point
-    std::vector<double> pointArc;        ///< arc length from the limb's start
-    std::vector<double> pointRadius;     ///< tube radius there (as buildTubeMesh's rings)
-    std::vector<NodeId> pointNode;       ///< the tree node of each limb point
+    std::vector<NodeId> rep;              ///< per node: the node it was merged into (or itself)
+    std::vector<std::uint32_t> degree;    ///< per node: drawn edges at it (merged nodes: 0)
+    std::vector<std::uint8_t> key;        ///< per node: 1 = key node
+    std::vector<std::int32_t> inLimb;     ///< per key node: the limb ending there, or -1
+    std::vector<std::int32_t> firstOut;   ///< per key node: first limb starting there, or -1
+    std::vector<std::uint32_t> outCount;  ///< per key node: limbs starting there (consecutive)
+    std::vector<WeldLimb> limbs;          ///< ordered so a limb's start key ends an earlier limb
+    std::vector<Vec3> pointPosition;      ///< per limb point
+    std::vector<double> pointArc;         ///< arc length from the limb's start
+    std::vector<double> pointRadius;      ///< tube radius there (as buildTubeMesh's rings)
+    std::vector<NodeId> pointNode;        ///< the tree node of each limb point
     double maxRadius = 0.0;
     double mergeDistance = 0.0;
 
-    double limbLength(const WeldLimb& limb) const {
-        return pointArc[limb.first + limb.count - 1];
-    }
+    double limbLength(const WeldLimb& limb) const { return pointArc[limb.first + limb.count - 1]; }
 };
 
 /// Groups the drawn edges of `tree` into limbs with the radii and segment counts of
@@ -48,10 +46,10 @@ WeldSkeleton buildWeldSkeleton(const BranchTree& tree, const TubeMeshParams& par
 
 /// A ring on a limb, `t` arc length from one of its ends; `normal` points away from that end.
 struct RingPlace {
-    Vec3 center;
-    Vec3 normal;
-    double radius;
-    double arc;  ///< arc length from the limb's start
+    Vec3 center = Vec3::Zero();
+    Vec3 normal = Vec3::Zero();
+    double radius = 0.0;
+    double arc = 0.0;  ///< arc length from the limb's start
 };
 RingPlace ringOnLimb(const WeldSkeleton& skeleton, const WeldLimb& limb, bool fromEnd, double t);
 

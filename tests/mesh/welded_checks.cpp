@@ -187,7 +187,8 @@ std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit,
                 bool shared = false;
                 for (int a = 0; a < 3; ++a)
                     for (int b = 0; b < 3; ++b)
-                        shared = shared || id[mesh.indices[3 * s + a]] == id[mesh.indices[3 * t + b]];
+                        shared =
+                            shared || id[mesh.indices[3 * s + a]] == id[mesh.indices[3 * t + b]];
                 if (shared || !trianglesIntersect(mesh, s, t)) continue;
                 if (pairs != nullptr) pairs->emplace_back(s, t);
                 if (++found >= limit) return found;
@@ -258,7 +259,8 @@ CapsuleDistance CapsuleUnion::at(const Vec3& p) const {
 double windingNumber(const Mesh& mesh, const Vec3& p) {
     double total = 0.0;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const Vec3 a = corner(mesh, t, 0) - p, b = corner(mesh, t, 1) - p, c = corner(mesh, t, 2) - p;
+        const Vec3 a = corner(mesh, t, 0) - p, b = corner(mesh, t, 1) - p,
+                   c = corner(mesh, t, 2) - p;
         const double la = a.norm(), lb = b.norm(), lc = c.norm();
         const double numerator = a.dot(b.cross(c));
         const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;

@@ -43,8 +43,9 @@ double worstNormalLength(const Mesh& mesh);
 
 /// Pairs of triangles that share no vertex position and intersect (edge of one through the
 /// other's interior), found over a uniform grid. Returns the count, up to `limit`.
-std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit = 10,
-                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr);
+std::size_t countSelfIntersections(
+    const Mesh& mesh, std::size_t limit = 10,
+    std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr);
 
 /// Signed distance to the union of the tree's tapered capsules (round cones between the
 /// nodes of every drawn edge, radii from `radii` as buildTubeMesh uses them); `radius`: of the

@@ -118,13 +118,14 @@ TEST(WeldedExamples, EveryColonizationExampleIsClosedGenusZeroSurfaces) {
 }
 
 TEST(WeldedExamples, SmallExamplesHaveNoSelfIntersections) {
-    const std::vector<std::pair<std::string, int>> cases = {
-        {"monopodial.lsys", 6}, {"sympodial.lsys", 6}, {"abop_2_6a.lsys", 6},
-        {"abop_2_7a.lsys", 6}};
+    const std::vector<std::pair<std::string, int>> cases = {{"monopodial.lsys", 6},
+                                                            {"sympodial.lsys", 6},
+                                                            {"abop_2_6a.lsys", 6},
+                                                            {"abop_2_7a.lsys", 6}};
     for (const auto& [file, derivations] : cases) {
         SCOPED_TRACE(file);
-        const BranchTree tree = growLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/" + file,
-                                            derivations);
+        const BranchTree tree =
+            growLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/" + file, derivations);
         const Mesh mesh = buildWeldedTreeMesh(tree);
         ASSERT_GT(mesh.triangleCount(), 0u);
         std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
