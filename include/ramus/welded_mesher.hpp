@@ -35,6 +35,8 @@ struct WeldReport {
     std::size_t crossings = 0;
     std::size_t fallbacks = 0;   ///< junctions left as separately capped tubes (should be 0)
     std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
+    /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).
+    std::size_t junctionTriangles = 0;
 };
 
 /// Meshes `tree` as closed surfaces: one per part of the tree connected by drawn edges

@@ -267,7 +267,9 @@ Mesh WeldBuilder::build(WeldReport* report) {
         }
         discFirst_[l + 1] = static_cast<std::uint32_t>(discs_.size());
     }
+    const std::size_t tubeIndices = mesh_.indices.size();
     for (NodeId cluster : junctions_.junctions) meshJunction(cluster);
+    report_.junctionTriangles = (mesh_.indices.size() - tubeIndices) / 3;
     if (junctions_.absorbedLimbs + junctions_.merges > 0) dropUnusedVertices();
     if (!mesh_.indices.empty()) {
         mesh_.materials.push_back(params_.tube.material);
