@@ -190,14 +190,17 @@ std::int32_t JunctionSolver::placeRings(bool clamp) {
             moved = moved || step[i] > 0.0;
         }
         if (!moved) break;
+        moved = false;  // now: did any ring actually move (rings at their limb's end stay)
         for (std::size_t i = 0; i < arms_.size(); ++i) {
             Arm& arm = arms_[i];
             const WeldLimb& l = s_.limbs[static_cast<std::size_t>(arm.limb)];
-            arm.t += step[i];
             const double room = s_.limbLength(l) - gap(arm.limb);
-            if (arm.t > room && !clamp) return static_cast<std::int32_t>(i);
-            arm.t = std::min(arm.t, room);
+            if (arm.t + step[i] > room && !clamp) return static_cast<std::int32_t>(i);
+            const double t = std::min(arm.t + step[i], room);
+            moved = moved || t > arm.t;
+            arm.t = t;
         }
+        if (!moved) break;
         if (iteration + 1 == kMaxIterations && !clamp) {
             return static_cast<std::int32_t>(std::max_element(step.begin(), step.end()) -
                                              step.begin());
