@@ -26,6 +26,10 @@ std::string readFile(const std::string& path) {
 }
 
 void writeFileAtomic(const std::string& path, std::string_view bytes) {
+    writeFileAtomic(path, std::span<const std::string_view>(&bytes, 1));
+}
+
+void writeFileAtomic(const std::string& path, std::span<const std::string_view> parts) {
     // The temp name only needs to be unique, not reproducible, so a non-deterministic source is
     // fine here (it never influences the file's contents).
     std::random_device device;
@@ -35,7 +39,10 @@ void writeFileAtomic(const std::string& path, std::string_view bytes) {
 
     std::FILE* file = std::fopen(tempPath.c_str(), "wb");
     if (!file) throw Error(path + ": cannot write file: " + std::strerror(errno));
-    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    bool ok = true;
+    for (const std::string_view bytes : parts) {
+        ok = ok && std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    }
     ok = (std::fflush(file) == 0) && ok;
     ok = (std::fclose(file) == 0) && ok;
     if (!ok) {

@@ -1,6 +1,7 @@
 #include "io/scene_check.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 
@@ -29,6 +30,19 @@ bool allFinite(const Vec& v) {
     return true;
 }
 
+// Whether all `count` floats are finite: a float is ±inf or NaN exactly when its exponent
+// bits are all ones. One branch-free pass that the compiler vectorizes; only a failure looks
+// closer.
+bool allFiniteFloats(const float* values, std::size_t count) {
+    constexpr std::uint32_t kExponent = 0x7F800000u;
+    std::uint32_t nonFinite = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        nonFinite |= static_cast<std::uint32_t>(
+            (std::bit_cast<std::uint32_t>(values[i]) & kExponent) == kExponent);
+    }
+    return nonFinite == 0;
+}
+
 template <typename Vec>
 void checkAttribute(const std::vector<Vec>& values, std::size_t vertexCount, const char* name,
                     const std::string& where) {
@@ -36,6 +50,11 @@ void checkAttribute(const std::vector<Vec>& values, std::size_t vertexCount, con
         fail(where, std::string(name) + " has " + std::to_string(values.size()) +
                         " entries; expected 0 or " + std::to_string(vertexCount) +
                         " (one per vertex)");
+    }
+    static_assert(sizeof(Vec) == sizeof(float) * Vec::SizeAtCompileTime, "packed vectors");
+    if (values.empty() ||
+        allFiniteFloats(values.data()->data(), values.size() * Vec::SizeAtCompileTime)) {
+        return;
     }
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!allFinite(values[i])) {
@@ -119,7 +138,9 @@ void checkMesh(const Mesh& mesh, const std::string& where) {
         fail(where, "has " + std::to_string(mesh.indices.size()) +
                         " indices; expected a multiple of 3 (triangles)");
     }
-    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+    std::uint32_t largest = 0;
+    for (const std::uint32_t index : mesh.indices) largest = std::max(largest, index);
+    for (std::size_t i = 0; largest >= n && i < mesh.indices.size(); ++i) {
         if (mesh.indices[i] >= n) {
             fail(where, "index " + std::to_string(i) + " is " + std::to_string(mesh.indices[i]) +
                             "; expected < " + std::to_string(n) + " (the vertex count)");
@@ -129,7 +150,25 @@ void checkMesh(const Mesh& mesh, const std::string& where) {
     for (const Material& m : mesh.materials) checkMaterial(m, where);
 }
 
+// Whether node i is valid; cheap (no strings), so the located messages of checkNode are built
+// only for a node that fails.
+bool nodeIsValid(const Scene& scene, std::size_t i) {
+    const SceneNode& node = scene.nodes[i];
+    const int meshCount = static_cast<int>(scene.meshes.size());
+    const int skinCount = static_cast<int>(scene.skins.size());
+    if (node.parent < -1 || node.parent >= static_cast<int>(i)) return false;
+    if (node.mesh < -1 || node.mesh >= meshCount || node.skin < -1 || node.skin >= skinCount) {
+        return false;
+    }
+    if (!allFinite(node.translation) || !allFinite(node.scale)) return false;
+    if (node.mesh >= 0 && (node.skin >= 0) == scene.meshes[node.mesh].joints.empty()) return false;
+    if (node.mesh < 0 && node.skin >= 0) return false;
+    const double norm = node.rotation.norm();
+    return std::isfinite(norm) && norm >= 1e-6;
+}
+
 void checkNode(const Scene& scene, std::size_t i, const std::string& context) {
+    if (nodeIsValid(scene, i)) return;
     const SceneNode& node = scene.nodes[i];
     const std::string where = context + ": node " + std::to_string(i) + " ('" + node.name + "')";
     if (node.parent < -1 || node.parent >= static_cast<int>(i)) {
@@ -163,13 +202,6 @@ void checkNode(const Scene& scene, std::size_t i, const std::string& context) {
     if (!std::isfinite(norm) || norm < 1e-6) {
         fail(where, "rotation is not a valid quaternion (norm " + std::to_string(norm) + ")");
     }
-}
-
-bool isAncestorOrSelf(const Scene& scene, int ancestor, int node) {
-    for (int i = node; i >= 0; i = scene.nodes[i].parent) {
-        if (i == ancestor) return true;
-    }
-    return false;
 }
 
 void checkInverseBindMatrices(const Skin& skin, const std::string& where) {
@@ -213,8 +245,15 @@ void checkSkin(const Scene& scene, std::size_t k, const std::string& context) {
         fail(where, "skeleton is " + std::to_string(skin.skeleton) + "; expected -1 or < " +
                         std::to_string(nodeCount));
     }
+    // Nodes at or below the skeleton root, in one pass (parents come before children).
+    std::vector<char> below(scene.nodes.size(), static_cast<char>(skin.skeleton < 0));
+    for (std::size_t i = 0; skin.skeleton >= 0 && i < scene.nodes.size(); ++i) {
+        const int parent = scene.nodes[i].parent;
+        below[i] = static_cast<char>(static_cast<int>(i) == skin.skeleton ||
+                                     (parent >= 0 && below[parent] != 0));
+    }
     for (int joint : skin.joints) {
-        if (skin.skeleton >= 0 && !isAncestorOrSelf(scene, skin.skeleton, joint)) {
+        if (below[joint] == 0) {
             fail(where, "joint node " + std::to_string(joint) + " is not below the skeleton root " +
                             std::to_string(skin.skeleton));
         }

@@ -152,6 +152,37 @@ TEST(Skin, JointsAreBytesAndTheMatricesHaveNoBufferTarget) {
     EXPECT_EQ(doc["scenes"][0]["nodes"], json::array({0, 2}));
 }
 
+TEST(Skin, RigidWeightsAreNormalizedBytesThatReadBackExactly) {
+    Scene scene = makeSkinnedScene();
+    Mesh& mesh = scene.meshes[0];
+    for (std::size_t v = 0; v < mesh.weights.size(); ++v) {  // every vertex on one joint
+        mesh.joints[v] = {static_cast<std::uint16_t>(v % 2), 0, 0, 0};
+        mesh.weights[v] = Vec4f(1.0f, 0.0f, 0.0f, 0.0f);
+    }
+    const std::string path = (scratchDir("skin_rigid") / "rigid.glb").string();
+    writeGlb(scene, path);
+    exportForValidator(scene, "skinned_rigid");
+    const json doc = glbJson(readFile(path));
+    const json& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
+    const json& weights = doc["accessors"][attributes["WEIGHTS_0"].get<int>()];
+    EXPECT_EQ(weights["componentType"], 5121);  // UNSIGNED_BYTE
+    EXPECT_EQ(weights["normalized"], true);
+    const LoadedGltf gltf = loadGlb(path);
+    const io::Reader reader{gltf.model, gltf.path};
+    const std::vector<double> read = io::readAccessor(
+        reader, gltf.model.meshes[0].primitives[0].attributes.at("WEIGHTS_0"), 4, "W");
+    ASSERT_EQ(read.size(), 4 * mesh.weights.size());
+    for (std::size_t i = 0; i < read.size(); ++i) EXPECT_EQ(read[i], i % 4 == 0 ? 1.0 : 0.0) << i;
+}
+
+TEST(Skin, BlendedWeightsStayFloats) {
+    const json doc = glbJson(encodeGlb(makeSkinnedScene()));  // 0.25 / 0.75 on some vertices
+    const json& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
+    const json& weights = doc["accessors"][attributes["WEIGHTS_0"].get<int>()];
+    EXPECT_EQ(weights["componentType"], 5126);
+    EXPECT_FALSE(weights.contains("normalized"));
+}
+
 TEST(Skin, EncodingTwiceGivesIdenticalBytes) {
     const Scene scene = makeSkinnedScene();
     EXPECT_EQ(encodeGlb(scene), encodeGlb(scene));
