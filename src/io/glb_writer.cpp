@@ -65,13 +65,6 @@ void normalizeSkinning(const Mesh& mesh, std::vector<std::array<std::uint16_t, 4
     joints = mesh.joints;
     weights.resize(mesh.weights.size());
     for (std::size_t v = 0; v < joints.size(); ++v) {
-        const Vec4f& given = mesh.weights[v];
-        if (given[1] == 0.0f && given[2] == 0.0f && given[3] == 0.0f && given[0] > 0.0f) {
-            // Rigidly bound (every skeleton bone vertex): what the general rule below gives.
-            weights[v] = Vec4f(1.0f, 0.0f, 0.0f, 0.0f);
-            joints[v] = {joints[v][0], 0, 0, 0};
-            continue;
-        }
         std::array<double, 4> w{};
         for (int k = 0; k < 4; ++k) {
             int first = 0;
@@ -324,16 +317,35 @@ void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
     if (!mesh.joints.empty()) addSkinAttributes(mesh, attributes);
 }
 
+// Whether every vertex is bound to its first joint alone (weights (w, 0, 0, 0), w > 0): what
+// skeleton bones are. normalizeSkinning then gives weights (1, 0, 0, 0) and joints (j, 0, 0, 0).
+bool rigidlyBound(const Mesh& mesh) {
+    for (const Vec4f& w : mesh.weights) {
+        if (!(w[0] > 0.0f) || w[1] != 0.0f || w[2] != 0.0f || w[3] != 0.0f) return false;
+    }
+    return true;
+}
+
 // JOINTS_0 as UNSIGNED_BYTE when every joint index fits, else UNSIGNED_SHORT. WEIGHTS_0 as
-// normalised UNSIGNED_BYTE when every weight is exactly 0 or 1 (rigid binding, as skeleton
-// bones have: 255 reads back as exactly 1), else as FLOAT — never a lossy quantization.
+// normalised UNSIGNED_BYTE (1, 0, 0, 0) when every vertex is rigidly bound (255 reads back as
+// exactly 1), else as FLOAT — never a lossy quantization.
 void GlbBuilder::addSkinAttributes(const Mesh& mesh, JsonWriter& attributes) {
+    const std::size_t n = mesh.joints.size();
+    const bool rigid = rigidlyBound(mesh);
     std::vector<std::array<std::uint16_t, 4>> joints;
     std::vector<Vec4f> weights;
-    normalizeSkinning(mesh, joints, weights);
+    if (!rigid) normalizeSkinning(mesh, joints, weights);
     std::uint16_t maxJoint = 0;
-    for (const auto& j : joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
-    const std::size_t n = joints.size();
+    if (rigid) {
+        for (const auto& j : mesh.joints) maxJoint = std::max(maxJoint, j[0]);
+    } else {
+        for (const auto& j : joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
+    }
+    // A rigid vertex's joints are (j, 0, 0, 0); the others come normalized.
+    if (rigid) {
+        joints.resize(n, {0, 0, 0, 0});
+        for (std::size_t v = 0; v < n; ++v) joints[v][0] = mesh.joints[v][0];
+    }
     int jointView = 0;
     if (maxJoint <= 255) {
         jointView = addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [&joints](std::uint8_t* dst) {
@@ -347,15 +359,11 @@ void GlbBuilder::addSkinAttributes(const Mesh& mesh, JsonWriter& attributes) {
     attributes.key("JOINTS_0");
     attributes.value(
         addAccessor(jointView, 0, maxJoint <= 255 ? kUnsignedByte : kUnsignedShort, n, "VEC4"));
-    bool rigid = true;
-    const float* w = weights.data()->data();
-    for (std::size_t i = 0; i < 4 * n; ++i) rigid &= w[i] == 0.0f || w[i] == 1.0f;
     attributes.key("WEIGHTS_0");
     if (rigid) {
-        const int view =
-            addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [w, n](std::uint8_t* dst) {
-                for (std::size_t i = 0; i < 4 * n; ++i) dst[i] = w[i] == 1.0f ? 255 : 0;
-            });
+        const int view = addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [n](std::uint8_t* dst) {
+            for (std::size_t i = 0; i < 4 * n; ++i) dst[i] = i % 4 == 0 ? 255 : 0;
+        });
         attributes.value(addAccessor(view, 0, kUnsignedByte, n, "VEC4", nullptr, true));
     } else {
         attributes.value(addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4"));
