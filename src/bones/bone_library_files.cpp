@@ -164,13 +164,8 @@ private:
         return full.string();
     }
 
-    BoneModel model(const std::string& name, const Json& entry) const {
-        const Path path = {"models", name};
-        object(entry, path,
-               {"mesh", "low", "high", "parent_joint", "child_joints", "width_from_height",
-                "comment"});
-        BoneModel model;
-        const std::string mesh = meshPath(name, entry, path);
+    // parent_joint, child_joints and width_from_height of an entry.
+    void readOffsets(const Json& entry, const Path& path, BoneModel& model) const {
         const Json& parent = member(entry, path, "parent_joint",
                                     "where the joint to the parent sits, e.g. [0, 0, 0]");
         model.parentJoint = point(parent, child(path, "parent_joint"));
@@ -201,6 +196,16 @@ private:
             }
             model.widthFromHeight = w.get<double>();
         }
+    }
+
+    BoneModel model(const std::string& name, const Json& entry) const {
+        const Path path = {"models", name};
+        object(entry, path,
+               {"mesh", "low", "high", "parent_joint", "child_joints", "width_from_height",
+                "comment"});
+        BoneModel model;
+        const std::string mesh = meshPath(name, entry, path);
+        readOffsets(entry, path, model);
         try {
             model.mesh = detail::readBoneMesh(mesh, name);
         } catch (const Error& e) {

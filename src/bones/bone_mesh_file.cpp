@@ -16,6 +16,7 @@
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
+#include "skeleton/number_text.hpp"
 
 namespace ramus::detail {
 namespace {
@@ -130,7 +131,7 @@ private:
         volume /= 6.0;
         if (!(volume > 0.0)) {
             throw Error(SourceLoc{file_, 0, 0},
-                        "the mesh encloses a signed volume of " + std::to_string(volume) +
+                        "the mesh encloses a signed volume of " + detail::shortest(volume) +
                             "; expected a positive one (triangles counter-clockwise seen from "
                             "outside; flip the normals / face orientation)");
         }
