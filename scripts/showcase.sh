@@ -58,17 +58,18 @@ for res in low high; do
   b --name fish --legs 0 --wings 0 --fins 4 --two-per-girdle --head reptile --seed 1
 done
 sheet=()
-for spec in "African elephant:herbivore" "Horse (warmblood):herbivore" "Pigeon:bird" \
-            "Frog:reptile" "Snake:reptile"; do
-  species=${spec%%:*}
-  head=${spec##*:}
+# No --head: each example gets the skull of its class (elephant, horse: herbivore; pigeon: bird;
+# frog, snake: reptile).
+for species in "African elephant" "Horse (warmblood)" "Pigeon" "Frog" "Snake"; do
   stem=$(echo "$species" | tr 'A-Z ' 'a-z_' | tr -cd 'a-z_')
   for res in box low high; do
-    "$ramus" skeleton --example "$species" --head "$head" --resolution "$res" --seed 1 \
+    "$ramus" skeleton --example "$species" --resolution "$res" --seed 1 \
       --name "${stem}_${res}" -o "$bones/species" >/dev/null
     sheet+=("$bones/species/${stem}_${res}0.glb")
   done
 done
 "$ramus" render "${sheet[@]}" --sheet --columns 3 --size 400x300 --view side \
   -o "$bones/species_box_low_high.png"
-echo "showcase: bone models written to $(cd "$bones" && pwd) (low/, high/, species/, species_box_low_high.png)"
+# The default library as a user library (a template to edit; ramus skeleton --bones DIR).
+"$ramus" bones export "$bones/library" >/dev/null
+echo "showcase: bone models written to $(cd "$bones" && pwd) (low/, high/, species/, species_box_low_high.png, library/)"

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     ramus::cli::addPcaCommand(app);
     ramus::cli::addColonizeCommand(app);
     ramus::cli::addSkeletonCommand(app);
+    ramus::cli::addBonesCommand(app);
     ramus::cli::addServeCommand(app);
     ramus::cli::addBatchCommand(app);
     try {
