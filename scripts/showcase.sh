@@ -28,6 +28,19 @@ for file in examples/colonize/*.json; do
 done
 echo "showcase: colonization examples written to $(cd "$out" && pwd)/colonize"
 
+# Production tree assets (issue 9): leaves, wind data, textures and three LODs in one GLB.
+as="$out/assets"
+mkdir -p "$as"
+"$ramus" lsystem examples/lsystems/tree_3d.lsys --leaves --wind --lods 1,0.4,0.15 \
+  -o "$as/tree_3d_leaves.glb" --png "$as/tree_3d_leaves.png" --stats > "$as/tree_3d_leaves.stats.json"
+"$ramus" colonize examples/colonize/broadleaf.json --leaves --leaves-per-length 0.05 --wind \
+  --lods 1,0.4,0.15 -o "$as/broadleaf_leaves.glb" --png "$as/broadleaf_leaves.png" \
+  --stats > "$as/broadleaf_leaves.stats.json"
+"$ramus" colonize examples/colonize/roots.json --view side -o "$as/roots.glb" \
+  --png "$as/roots.png" --stats > "$as/roots.stats.json"
+for f in "$as"/*.stats.json; do printf '  %-24s %s\n' "$(basename "$f" .stats.json)" "$(cat "$f")"; done
+echo "showcase: tree assets (leaves, wind, LODs) written to $(cd "$out" && pwd)/assets"
+
 # The skeleton cases of seed 000 (figs 5.2, 5.4–5.6, 6.2) and a random set.
 sk="$out/skeletons"
 mkdir -p "$sk"

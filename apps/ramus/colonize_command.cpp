@@ -28,6 +28,7 @@ struct ColonizeOptions {
     bool stats = false;
     TreeOutputs outputs;
     TubeMeshParams mesh;  // flags; applied over the config's "mesh" object when given
+    AssetOptions assets;
     CLI::App* command = nullptr;
 };
 
@@ -64,6 +65,23 @@ TubeMeshParams meshParams(const ColonizeOptions& o, const ColonizeConfig& config
     return p;
 }
 
+// Asset settings from the config (its "mesh" asset keys and "leaves"), before the flags.
+AssetSettings configAssets(const ColonizeConfig& config) {
+    AssetSettings s;
+    const ColonizeConfig::MeshOverrides& m = config.mesh;
+    s.mesh.tube.windAttributes = m.hasWind && m.wind;
+    if (m.hasUvAspect) {
+        s.mesh.tube.uvAspect = m.uvAspect;
+        s.uvAspectGiven = true;
+    }
+    if (m.hasTextures) s.textures = m.textures;
+    s.lods = m.lods;
+    s.mesh.leaves = config.hasLeaves;
+    if (config.hasLeaves) s.mesh.leaf = config.leaves;
+    if (config.hasGround) s.mesh.leaf.minHeight = config.ground;  // bare root systems
+    return s;
+}
+
 // One tree: the usual tree JSON; several: {"trees":[…]} with one such object per root.
 std::string encodeForest(const std::vector<BranchTree>& trees, const TubeMeshParams& mesh) {
     if (trees.size() == 1) return encodeTreeJson(trees[0], computeEdgeRadii(trees[0], mesh));
@@ -94,6 +112,7 @@ void run(ColonizeOptions& o) {
     for (const Envelope& e : config.envelopes) requested += e.pointCount;
     checkPointCount(requested, o.maxPoints, "the envelopes ask for");
     const TubeMeshParams mesh = meshParams(o, config);
+    const AssetSettings assets = applyAssetOptions(mesh, o.assets, configAssets(config));
     if (!o.stats && !o.outputs.any()) {
         o.outputs.model = std::filesystem::path(o.config).stem().string() + ".glb";
         std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());
@@ -114,7 +133,7 @@ void run(ColonizeOptions& o) {
     for (const std::string& w : result.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     timer.restart();
-    const Mesh model = forestMesh(result.trees, mesh);
+    const TreeModel model = forestModel(result.trees, assets.mesh, assets.lods);
     timer.lap("mesh");
 
     TreeOutputs outputs = o.outputs;
@@ -158,6 +177,7 @@ void addColonizeCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
     addTreeOutputOptions(*cmd, options->outputs);
     addTubeMeshOptions(*cmd, options->mesh);
+    addAssetOptions(*cmd, options->assets);
     cmd->callback([options] { run(*options); });
 }
 

@@ -16,6 +16,7 @@
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
+#include "ramus/render.hpp"
 
 namespace ramus {
 
@@ -79,11 +80,6 @@ void normalizeSkinning(const Mesh& mesh, std::vector<std::array<std::uint16_t, 4
     }
 }
 
-bool sameMaterial(const Material& a, const Material& b) {
-    return a.name == b.name && a.baseColor == b.baseColor && a.metallic == b.metallic &&
-           a.roughness == b.roughness && a.doubleSided == b.doubleSided;
-}
-
 // JSON's name for the type of the valid JSON value that starts with `first`.
 const char* jsonTypeName(char first) {
     switch (first) {
@@ -124,6 +120,7 @@ std::size_t binBytesBound(const Scene& scene) {
                  m.tangents.size() * sizeof(Vec4f) + m.uvs.size() * sizeof(Vec2f) +
                  m.joints.size() * sizeof(m.joints[0]) + m.weights.size() * sizeof(Vec4f) +
                  m.indices.size() * sizeof(std::uint32_t) + 7 * 3;
+        for (const VertexAttribute& a : m.attributes) bytes += a.values.size() * 4 + 3;
     }
     for (const Skin& skin : scene.skins) bytes += skin.inverseBindMatrices.size() * 64 + 3;
     return bytes + 3;
@@ -154,6 +151,7 @@ private:
     int addAccessor(int view, std::size_t byteOffset, int componentType, std::size_t count,
                     const char* type, const Vec3f* bounds = nullptr, bool normalized = false);
     int addMaterial(const Material& material);
+    int addTexture(const Image& image);
     void addVertexAttributes(const Mesh& mesh, JsonWriter& attributes);
     void addSkinAttributes(const Mesh& mesh, JsonWriter& attributes);
     int addIndices(const Mesh& mesh);
@@ -163,6 +161,16 @@ private:
     void addSkins();
     void writeName(JsonWriter& w, const std::string& name, const char* owner, std::size_t index);
     void writeDocument(std::string& out);
+    // Makes room for `bytes` in the BIN chunk. The first allocation covers binBytesBound;
+    // only data of unknown size (encoded PNG images) can make it grow.
+    void reserveBin(std::size_t bytes) {
+        if (bytes <= binCapacity_) return;
+        const std::size_t capacity = std::max(bytes, 2 * binCapacity_);
+        std::unique_ptr<char[]> larger(new char[capacity]);
+        if (binSize_ > 0) std::memcpy(larger.get(), bin_.get(), binSize_);
+        bin_ = std::move(larger);
+        binCapacity_ = capacity;
+    }
     // Pads the BIN chunk with zeros to the next multiple of 4 bytes (views and the chunk end).
     void alignBin() {
         while (binSize_ % 4 != 0) bin_[binSize_++] = '\0';
@@ -170,18 +178,20 @@ private:
 
     const Scene& scene_;
     std::string context_;
-    // The BIN chunk: allocated once at binBytesBound (no zero fill, no reallocation); binSize_
+    // The BIN chunk: allocated at binBytesBound (no zero fill; grows only for images); binSize_
     // bytes are used.
     std::unique_ptr<char[]> bin_;
     std::string head_;
     std::size_t binCapacity_ = 0, binSize_ = 0;
     std::string bufferViewsText_, accessorsText_, materialsText_, meshesText_, nodesText_,
-        skinsText_;
+        skinsText_, imagesText_, texturesText_;
     JsonWriter bufferViews_{bufferViewsText_}, accessors_{accessorsText_},
-        materials_{materialsText_}, meshes_{meshesText_}, nodes_{nodesText_}, skins_{skinsText_};
+        materials_{materialsText_}, meshes_{meshesText_}, nodes_{nodesText_}, skins_{skinsText_},
+        images_{imagesText_}, textures_{texturesText_};
     int bufferViewCount_ = 0, accessorCount_ = 0, meshCount_ = 0;
     std::vector<int> roots_;
     std::vector<Material> materialKeys_;
+    std::vector<const Image*> textureKeys_;  // one glTF image and texture each
 };
 
 template <typename T, typename Fill>
@@ -190,7 +200,7 @@ int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill) {
     alignBin();
     const std::size_t offset = binSize_;
     const std::size_t bytes = count * sizeof(T);
-    RAMUS_ASSERT(offset + bytes <= binCapacity_);
+    reserveBin(offset + bytes + 3);
     fill(reinterpret_cast<T*>(bin_.get() + offset));
     binSize_ += bytes;
     JsonWriter& w = bufferViews_;
@@ -256,8 +266,27 @@ int GlbBuilder::addMaterial(const Material& m) {
     w.value(m.metallic);
     w.key("roughnessFactor");
     w.value(m.roughness);
+    if (m.baseColorTexture) {
+        w.key("baseColorTexture");
+        w.beginObject();
+        w.key("index");
+        w.value(addTexture(*m.baseColorTexture));
+        w.endObject();
+    }
     w.endObject();
-    if (m.baseColor.w() < 1.0f) {
+    if (m.normalTexture) {
+        w.key("normalTexture");
+        w.beginObject();
+        w.key("index");
+        w.value(addTexture(*m.normalTexture));
+        w.endObject();
+    }
+    if (m.alphaMask) {
+        w.key("alphaMode");
+        w.value("MASK");
+        w.key("alphaCutoff");
+        w.value(m.alphaCutoff);
+    } else if (m.baseColor.w() < 1.0f) {
         w.key("alphaMode");
         w.value("BLEND");
     }
@@ -267,6 +296,31 @@ int GlbBuilder::addMaterial(const Material& m) {
     }
     w.endObject();
     return static_cast<int>(materialKeys_.size()) - 1;
+}
+
+// A texture of `image` (PNG in a buffer view, sampler 0: linear filtering, REPEAT); an image
+// used by several materials is stored once.
+int GlbBuilder::addTexture(const Image& image) {
+    for (std::size_t i = 0; i < textureKeys_.size(); ++i) {
+        if (textureKeys_[i] == &image) return static_cast<int>(i);
+    }
+    const std::string png = encodePng(image);
+    const int view = addBufferView<char>(
+        png.size(), 0, [&png](char* dst) { std::memcpy(dst, png.data(), png.size()); });
+    images_.beginObject();
+    images_.key("bufferView");
+    images_.value(view);
+    images_.key("mimeType");
+    images_.value("image/png");
+    images_.endObject();
+    textures_.beginObject();
+    textures_.key("sampler");
+    textures_.value(0);
+    textures_.key("source");
+    textures_.value(static_cast<int>(textureKeys_.size()));
+    textures_.endObject();
+    textureKeys_.push_back(&image);
+    return static_cast<int>(textureKeys_.size()) - 1;
 }
 
 // Writes POSITION (with the min/max glTF requires), NORMAL (unit; a zero normal becomes +Y),
@@ -315,6 +369,12 @@ void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
         attributes.value(addAccessor(addBufferView(mesh.uvs, kArrayBuffer), 0, kFloat, n, "VEC2"));
     }
     if (!mesh.joints.empty()) addSkinAttributes(mesh, attributes);
+    static const char* const kTypes[] = {"SCALAR", "VEC2", "VEC3", "VEC4"};
+    for (const VertexAttribute& a : mesh.attributes) {
+        attributes.key(a.name);
+        attributes.value(addAccessor(addBufferView(a.values, kArrayBuffer), 0, kFloat, n,
+                                     kTypes[a.components - 1]));
+    }
 }
 
 // Whether every vertex is bound to its first joint alone (weights (w, 0, 0, 0), w > 0): what
@@ -568,8 +628,8 @@ void GlbBuilder::writeDocument(std::string& out) {
     w.endObject();
     w.endArray();
     const std::pair<const char*, const std::string*> arrays[] = {
-        {"nodes", &nodesText_},         {"meshes", &meshesText_},
-        {"skins", &skinsText_},         {"materials", &materialsText_},
+        {"nodes", &nodesText_},         {"meshes", &meshesText_},          {"skins", &skinsText_},
+        {"materials", &materialsText_}, {"textures", &texturesText_},      {"images", &imagesText_},
         {"accessors", &accessorsText_}, {"bufferViews", &bufferViewsText_}};
     for (const auto& [name, text] : arrays) {
         if (text->empty()) continue;
@@ -577,6 +637,11 @@ void GlbBuilder::writeDocument(std::string& out) {
         w.beginArray();
         w.rawValue(*text);  // the elements, comma-separated
         w.endArray();
+    }
+    if (!textureKeys_.empty()) {
+        // glTF's defaults are REPEAT wrapping; linear, mipmapped filtering suits tiling bark.
+        w.key("samplers");
+        w.rawValue(R"([{"magFilter":9729,"minFilter":9987}])");
     }
     if (binSize_ != 0) {
         w.key("buffers");
@@ -594,8 +659,7 @@ void GlbBuilder::writeDocument(std::string& out) {
 // the BIN chunk's bytes follow in bin() (kept apart so a file writer needs no joined copy).
 void GlbBuilder::encode() {
     io::checkScene(scene_, context_);
-    binCapacity_ = binBytesBound(scene_);
-    bin_.reset(new char[binCapacity_]);
+    reserveBin(binBytesBound(scene_));
     std::size_t extrasBytes = 0;
     for (const SceneNode& node : scene_.nodes) extrasBytes += node.extrasJson.size();
     nodesText_.reserve(extrasBytes + 160 * scene_.nodes.size());

@@ -10,6 +10,7 @@
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
+#include "ramus/render.hpp"
 
 namespace ramus {
 
@@ -34,14 +35,12 @@ void appendFloats(std::string& out, const char* tag, const float* v, int n) {
     out += '\n';
 }
 
-bool sameMaterial(const Material& a, const Material& b) {
-    return a.name == b.name && a.baseColor == b.baseColor && a.metallic == b.metallic &&
-           a.roughness == b.roughness && a.doubleSided == b.doubleSided;
-}
-
-// The scene's distinct materials with unique OBJ names, in first-use order.
+// The scene's distinct materials with unique OBJ names, in first-use order, and the PNG files
+// of their textures (named after the OBJ's stem and the first material using them).
 class MaterialTable {
 public:
+    explicit MaterialTable(std::string textureStem) : textureStem_(std::move(textureStem)) {}
+
     const std::string& nameOf(const Material& m) {
         for (std::size_t i = 0; i < materials_.size(); ++i) {
             if (sameMaterial(materials_[i], m)) return names_[i];
@@ -53,7 +52,14 @@ public:
         }
         materials_.push_back(m);
         names_.push_back(name);
+        baseColorFiles_.push_back(textureFile(m.baseColorTexture.get(), name));
+        normalFiles_.push_back(textureFile(m.normalTexture.get(), name + "_normal"));
         return names_.back();
+    }
+
+    /// The texture files to write: file name (next to the OBJ) and image.
+    const std::vector<std::pair<std::string, const Image*>>& textureFiles() const {
+        return textures_;
     }
 
     std::string mtl() const {
@@ -76,13 +82,30 @@ public:
             out += "illum 2\n";
             appendFloats(out, "Pr", &m.roughness, 1);
             appendFloats(out, "Pm", &m.metallic, 1);
+            if (!baseColorFiles_[i].empty()) {
+                out += "map_Kd " + baseColorFiles_[i] + "\n";
+                // Leaf cards: the same image's alpha cuts the leaf out.
+                if (m.alphaMask) out += "map_d " + baseColorFiles_[i] + "\n";
+            }
+            if (!normalFiles_[i].empty()) out += "norm " + normalFiles_[i] + "\n";
         }
         return out;
     }
 
 private:
+    std::string textureFile(const Image* image, const std::string& materialName) {
+        if (image == nullptr) return {};
+        for (const auto& [file, known] : textures_) {
+            if (known == image) return file;
+        }
+        textures_.emplace_back(textureStem_ + "_" + materialName + ".png", image);
+        return textures_.back().first;
+    }
+
+    std::string textureStem_;
     std::vector<Material> materials_;
-    std::vector<std::string> names_;
+    std::vector<std::string> names_, baseColorFiles_, normalFiles_;
+    std::vector<std::pair<std::string, const Image*>> textures_;
 };
 
 struct VertexBase {
@@ -248,12 +271,15 @@ void writeObj(const Scene& scene, const std::string& path) {
     const std::filesystem::path mtlPath = std::filesystem::path(path).replace_extension(".mtl");
     std::string obj = "# ramus 0.1.0 OBJ export: Y up, metres, front +Z\n";
     obj += "mtllib " + mtlPath.filename().string() + "\n";
-    MaterialTable materials;
+    MaterialTable materials(objName(std::filesystem::path(path).stem().string(), "model"));
     VertexBase base;
     for (const io::MeshInstance& inst : io::meshInstances(scene)) {
         appendInstance(obj, scene, inst, materials, base);
     }
-    // The library first, so the OBJ never points at a missing or stale MTL.
+    // Textures and the library first, so the OBJ never points at missing or stale files.
+    for (const auto& [file, image] : materials.textureFiles()) {
+        writeFileAtomic((mtlPath.parent_path() / file).string(), encodePng(*image));
+    }
     writeFileAtomic(mtlPath.string(), materials.mtl());
     writeFileAtomic(path, obj);
 }

@@ -80,6 +80,58 @@ void checkMaterial(const Material& m, const std::string& where) {
         fail(where, "material '" + m.name + "': roughness is " + formatFloat(m.roughness) +
                         "; expected a value in [0, 1]");
     }
+    if (m.alphaMask && !inUnitRange(m.alphaCutoff)) {
+        fail(where, "material '" + m.name + "': alphaCutoff is " + formatFloat(m.alphaCutoff) +
+                        "; expected a value in [0, 1]");
+    }
+    const std::pair<const char*, const Image*> textures[] = {
+        {"baseColorTexture", m.baseColorTexture.get()}, {"normalTexture", m.normalTexture.get()}};
+    for (const auto& [name, image] : textures) {
+        if (image == nullptr) continue;
+        const std::size_t expected = image->width > 0 && image->height > 0
+                                         ? std::size_t{4} * static_cast<std::size_t>(image->width) *
+                                               static_cast<std::size_t>(image->height)
+                                         : 0;
+        if (expected == 0 || image->rgba.size() != expected) {
+            fail(where, "material '" + m.name + "': " + name + " is " +
+                            std::to_string(image->width) + "x" + std::to_string(image->height) +
+                            " with " + std::to_string(image->rgba.size()) +
+                            " bytes; expected a non-empty image with 4 bytes (RGBA) per pixel");
+        }
+    }
+}
+
+// Custom attributes: names glTF accepts for application-specific data, unique, 1–4 finite
+// components per vertex.
+void checkCustomAttributes(const Mesh& mesh, const std::string& where) {
+    const std::size_t n = mesh.positions.size();
+    for (std::size_t k = 0; k < mesh.attributes.size(); ++k) {
+        const VertexAttribute& a = mesh.attributes[k];
+        const std::string label = "attribute '" + a.name + "'";
+        if (a.name.size() < 2 || a.name[0] != '_') {
+            fail(where, label + ": expected a name starting with '_' (glTF application-specific " +
+                            "attributes), e.g. _WIND");
+        }
+        for (std::size_t j = 0; j < k; ++j) {
+            if (mesh.attributes[j].name == a.name) fail(where, label + " is given twice");
+        }
+        if (a.components < 1 || a.components > 4) {
+            fail(where,
+                 label + " has " + std::to_string(a.components) + " components; expected 1 to 4");
+        }
+        const std::size_t expected = n * static_cast<std::size_t>(a.components);
+        if (a.values.size() != expected) {
+            fail(where, label + " has " + std::to_string(a.values.size()) + " values; expected " +
+                            std::to_string(expected) + " (" + std::to_string(a.components) +
+                            " per vertex)");
+        }
+        for (std::size_t i = 0; i < a.values.size(); ++i) {
+            if (!std::isfinite(a.values[i])) {
+                fail(where,
+                     label + " of vertex " + std::to_string(i / a.components) + " is not finite");
+            }
+        }
+    }
 }
 
 void checkPrimitives(const Mesh& mesh, const std::string& where) {
@@ -134,6 +186,7 @@ void checkMesh(const Mesh& mesh, const std::string& where) {
     checkAttribute(mesh.tangents, n, "tangents", where);
     checkAttribute(mesh.uvs, n, "uvs", where);
     checkSkinAttributes(mesh, where);
+    checkCustomAttributes(mesh, where);
     if (mesh.indices.size() % 3 != 0) {
         fail(where, "has " + std::to_string(mesh.indices.size()) +
                         " indices; expected a multiple of 3 (triangles)");

@@ -147,7 +147,7 @@ void makeLsystem(const BatchManifest& manifest, const BatchItem& item, const fs:
     const ModuleString word = deriveLSystem(system, derive);
     const TurtleResult shape =
         interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings));
-    writeModel(makeSingleMeshScene(plantMesh(shape, {}), "tree"), dir, job, item);
+    writeModel(makeSingleMeshScene(plantMesh(shape, TubeMeshParams{}), "tree"), dir, job, item);
 }
 
 void makeColonize(const BatchManifest& manifest, const BatchItem& item, const fs::path& dir) {
