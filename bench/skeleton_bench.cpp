@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "ramus/bones.hpp"
 #include "ramus/export.hpp"
@@ -62,17 +63,35 @@ void BM_SkeletonToGlbBytes(benchmark::State& state) {
 }
 BENCHMARK(BM_SkeletonToGlbBytes);
 
+/// Directories the end-to-end runs wrote, removed when the process ends: removing them between
+/// runs would slow the next runs' file creation — on a journal-less ext4 (as on this machine)
+/// the kernel skips inodes freed in the last seconds to minutes when it allocates a new one
+/// (ext4 recently_deleted), so every create after a mass delete scans them.
+struct OutputDirectories {
+    std::vector<std::filesystem::path> paths;
+    ~OutputDirectories() {
+        for (const auto& path : paths) std::filesystem::remove_all(path);
+    }
+};
+OutputDirectories& outputDirectories() {
+    static OutputDirectories directories;
+    return directories;
+}
+
 /// The whole path with the file written, as the thesis measured it: every skeleton gets its own
-/// new file, as in a batch (overwriting one file instead would add the cost of freeing the old
-/// file's blocks, ~150 µs here, which a batch never pays). The files are removed after the run.
+/// new file in a new directory, as in a batch (overwriting one file instead would add the cost
+/// of freeing the old file's blocks and inode, which a batch never pays).
 /// Arg: the resolution (0 box, 1 low, 2 high; issue 6 targets ≥ 300 low and ≥ 50 high per
 /// second); the bone library is built before timing (once per process, as in a batch).
 void BM_SkeletonEndToEndGlbFile(benchmark::State& state) {
     const auto resolution = static_cast<ramus::BoneResolution>(state.range(0));
     if (resolution != ramus::BoneResolution::Box) (void)ramus::BoneLibrary::builtin(resolution);
-    const std::filesystem::path dir = std::filesystem::path(benchDirectory()) / "end_to_end";
+    OutputDirectories& directories = outputDirectories();
+    const std::filesystem::path dir = std::filesystem::path(benchDirectory()) /
+                                      ("end_to_end_" + std::to_string(directories.paths.size()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
+    directories.paths.push_back(dir);
     const std::string prefix = (dir / "skeleton").string();
     std::uint64_t i = 0;
     for (auto _ : state) {
@@ -83,7 +102,6 @@ void BM_SkeletonEndToEndGlbFile(benchmark::State& state) {
     }
     state.SetItemsProcessed(state.iterations());
     state.SetLabel(std::string(ramus::boneResolutionName(resolution)));
-    std::filesystem::remove_all(dir);
 }
 BENCHMARK(BM_SkeletonEndToEndGlbFile)->Arg(0)->Arg(1)->Arg(2);
 

@@ -28,6 +28,19 @@ for file in examples/colonize/*.json; do
 done
 echo "showcase: colonization examples written to $(cd "$out" && pwd)/colonize"
 
+# Production tree assets (issue 9): leaves, wind data, textures and three LODs in one GLB.
+as="$out/assets"
+mkdir -p "$as"
+"$ramus" lsystem examples/lsystems/tree_3d.lsys --leaves --wind --lods 1,0.4,0.15 \
+  -o "$as/tree_3d_leaves.glb" --png "$as/tree_3d_leaves.png" --stats > "$as/tree_3d_leaves.stats.json"
+"$ramus" colonize examples/colonize/broadleaf.json --leaves --leaves-per-length 0.05 --wind \
+  --lods 1,0.4,0.15 -o "$as/broadleaf_leaves.glb" --png "$as/broadleaf_leaves.png" \
+  --stats > "$as/broadleaf_leaves.stats.json"
+"$ramus" colonize examples/colonize/roots.json --view side -o "$as/roots.glb" \
+  --png "$as/roots.png" --stats > "$as/roots.stats.json"
+for f in "$as"/*.stats.json; do printf '  %-24s %s\n' "$(basename "$f" .stats.json)" "$(cat "$f")"; done
+echo "showcase: tree assets (leaves, wind, LODs) written to $(cd "$out" && pwd)/assets"
+
 # The skeleton cases of seed 000 (figs 5.2, 5.4–5.6, 6.2) and a random set.
 sk="$out/skeletons"
 mkdir -p "$sk"
@@ -58,17 +71,18 @@ for res in low high; do
   b --name fish --legs 0 --wings 0 --fins 4 --two-per-girdle --head reptile --seed 1
 done
 sheet=()
-for spec in "African elephant:herbivore" "Horse (warmblood):herbivore" "Pigeon:bird" \
-            "Frog:reptile" "Snake:reptile"; do
-  species=${spec%%:*}
-  head=${spec##*:}
+# No --head: each example gets the skull of its class (elephant, horse: herbivore; pigeon: bird;
+# frog, snake: reptile).
+for species in "African elephant" "Horse (warmblood)" "Pigeon" "Frog" "Snake"; do
   stem=$(echo "$species" | tr 'A-Z ' 'a-z_' | tr -cd 'a-z_')
   for res in box low high; do
-    "$ramus" skeleton --example "$species" --head "$head" --resolution "$res" --seed 1 \
+    "$ramus" skeleton --example "$species" --resolution "$res" --seed 1 \
       --name "${stem}_${res}" -o "$bones/species" >/dev/null
     sheet+=("$bones/species/${stem}_${res}0.glb")
   done
 done
 "$ramus" render "${sheet[@]}" --sheet --columns 3 --size 400x300 --view side \
   -o "$bones/species_box_low_high.png"
-echo "showcase: bone models written to $(cd "$bones" && pwd) (low/, high/, species/, species_box_low_high.png)"
+# The default library as a user library (a template to edit; ramus skeleton --bones DIR).
+"$ramus" bones export "$bones/library" >/dev/null
+echo "showcase: bone models written to $(cd "$bones" && pwd) (low/, high/, species/, species_box_low_high.png, library/)"

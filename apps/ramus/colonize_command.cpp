@@ -28,7 +28,7 @@ struct ColonizeOptions {
     bool stats = false;
     TreeOutputs outputs;
     TubeMeshParams mesh;  // flags; applied over the config's "mesh" object when given
-    Junctions junctions = Junctions::Tubes;
+    AssetOptions assets;
     CLI::App* command = nullptr;
 };
 
@@ -95,6 +95,7 @@ void run(ColonizeOptions& o) {
     for (const Envelope& e : config.envelopes) requested += e.pointCount;
     checkPointCount(requested, o.maxPoints, "the envelopes ask for");
     const TubeMeshParams mesh = meshParams(o, config);
+    const AssetSettings assets = applyAssetOptions(mesh, o.assets, configAssets(config));
     if (!o.stats && !o.outputs.any()) {
         o.outputs.model = std::filesystem::path(o.config).stem().string() + ".glb";
         std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());
@@ -115,7 +116,7 @@ void run(ColonizeOptions& o) {
     for (const std::string& w : result.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     timer.restart();
-    const Mesh model = forestMesh(result.trees, mesh, o.junctions);
+    const TreeModel model = forestModel(result.trees, assets.mesh, assets.lods);
     timer.lap("mesh");
 
     TreeOutputs outputs = o.outputs;
@@ -159,7 +160,7 @@ void addColonizeCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
     addTreeOutputOptions(*cmd, options->outputs);
     addTubeMeshOptions(*cmd, options->mesh);
-    addJunctionOption(*cmd, options->junctions);
+    addAssetOptions(*cmd, options->assets);
     cmd->callback([options] { run(*options); });
 }
 

@@ -12,6 +12,7 @@ void addSpeciesCommand(CLI::App& app);
 void addPcaCommand(CLI::App& app);
 void addColonizeCommand(CLI::App& app);
 void addSkeletonCommand(CLI::App& app);
+void addBonesCommand(CLI::App& app);
 void addServeCommand(CLI::App& app);
 void addBatchCommand(CLI::App& app);
 

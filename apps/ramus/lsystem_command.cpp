@@ -27,7 +27,7 @@ struct LsystemOptions {
     bool stats = false;
     TreeOutputs outputs;
     TubeMeshParams mesh;
-    Junctions junctions = Junctions::Tubes;
+    AssetOptions assets;
 };
 
 // "NAME=VALUE" → pair; the value must be a plain number.
@@ -82,6 +82,7 @@ void run(LsystemOptions& o) {
         std::fprintf(stderr, "writing %s (use -o to choose the output)\n", o.outputs.model.c_str());
     }
 
+    const AssetSettings assets = applyAssetOptions(o.mesh, o.assets, AssetSettings{});
     StageTimer timer;
     const ModuleString word = deriveLSystem(system, deriveOptions);
     timer.lap("derive");
@@ -91,17 +92,17 @@ void run(LsystemOptions& o) {
     const TurtleResult shape = interpretTurtle(word, system.symbols, turtle);
     timer.lap("interpret");
 
-    const Mesh mesh = plantMesh(shape, o.mesh, o.junctions);
+    const TreeModel model = plantModel(shape, assets.mesh, assets.lods);
     timer.lap("mesh");
 
-    writeTreeOutputs(o.outputs, shape.tree, mesh, o.mesh);
+    writeTreeOutputs(o.outputs, shape.tree, model, o.mesh);
     if (o.stats) {
         nlohmann::ordered_json stats;
         stats["modules"] = word.size();
         stats["nodes"] = shape.tree.size();
         stats["edges"] = shape.tree.edgeCount();
         stats["polygons"] = shape.polygonCount();
-        printTreeStats(std::move(stats), mesh, timer);
+        printTreeStats(std::move(stats), model, timer);
     }
 }
 
@@ -127,7 +128,7 @@ void addLsystemCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
     addTreeOutputOptions(*cmd, options->outputs);
     addTubeMeshOptions(*cmd, options->mesh);
-    addJunctionOption(*cmd, options->junctions);
+    addAssetOptions(*cmd, options->assets);
     cmd->callback([options] { run(*options); });
 }
 

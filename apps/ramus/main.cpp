@@ -5,8 +5,10 @@
 
 #include "commands.hpp"
 #include "ramus/error.hpp"
+#include "ramus/memory_policy.hpp"
 
 int main(int argc, char** argv) {
+    ramus::keepFreedMemoryForReuse();  // many items per process: reuse, do not re-fault
     CLI::App app{"ramus: procedural plants and vertebrate skeletons as 3D assets", "ramus"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "ramus 0.1.0");
@@ -16,6 +18,7 @@ int main(int argc, char** argv) {
     ramus::cli::addPcaCommand(app);
     ramus::cli::addColonizeCommand(app);
     ramus::cli::addSkeletonCommand(app);
+    ramus::cli::addBonesCommand(app);
     ramus::cli::addServeCommand(app);
     ramus::cli::addBatchCommand(app);
     try {

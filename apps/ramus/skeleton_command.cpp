@@ -35,6 +35,7 @@ struct SkeletonOptions {
     int count = 1;
     std::string name = "skeleton";
     std::string resolution = "box";
+    std::string bones;  // user bone library directory; empty = the default library
     std::vector<std::uint64_t> seed;
     std::string spacing = "arc_length";
     std::string spread = "thesis";
@@ -71,10 +72,10 @@ SkeletonInputs inputsFrom(const SkeletonOptions& o) {
 
 /// One skeleton's files: NAME<i>.glb, .obj, .json and optionally .png in the output directory.
 void writeSkeletonFiles(const SkeletonOptions& o, const SkeletonDesign& design,
-                        const std::string& name, std::uint64_t seed) {
+                        const std::string& name, std::uint64_t seed, const BoneLibrary* bones) {
     const Skeleton skeleton = buildSkeleton(design);
     const Scene scene =
-        skeletonSceneAt(skeleton, *parseBoneResolution(o.resolution), design.headKind);
+        skeletonSceneAt(skeleton, *parseBoneResolution(o.resolution), design.headKind, bones);
     const std::filesystem::path base = std::filesystem::path(o.outputDirectory) / name;
     writeGlb(scene, base.string() + ".glb");
     writeObj(scene, base.string() + ".obj");
@@ -110,6 +111,11 @@ void checkOptions(const SkeletonOptions& o) {
     if (!o.load.empty() && !o.example.empty()) {
         throw Error("--load and --example: expected at most one source skeleton, got both");
     }
+    if (!o.bones.empty() && o.resolution == "box") {
+        throw Error(
+            "--bones: the box resolution draws boxes, not bone models; give --resolution "
+            "low or high");
+    }
 }
 
 void run(const SkeletonOptions& o) {
@@ -127,8 +133,12 @@ void run(const SkeletonOptions& o) {
     if (!o.seed.empty()) request.seed = o.seed.front();
     request.name = o.name;
     const std::vector<PlannedSkeleton> plan = planSkeletons(stats, request);
+    // Loaded once, before any file is written, and shared by every skeleton of the run.
+    std::optional<BoneLibrary> bones;
+    if (!o.bones.empty()) bones = loadBoneLibrary(o.bones, *parseBoneResolution(o.resolution));
     for (std::size_t i = 0; i < plan.size(); ++i) {
-        writeSkeletonFiles(o, plan[i].design, plan[i].name, plan[i].seed);
+        writeSkeletonFiles(o, plan[i].design, plan[i].name, plan[i].seed,
+                           bones ? &*bones : nullptr);
         printProgress(static_cast<int>(i + 1), static_cast<int>(plan.size()));
     }
 }
@@ -170,6 +180,9 @@ void addSkeletonCommand(CLI::App& app) {
                     "bone meshes: box, low or high (the default bone library)")
         ->check(CLI::IsMember({"box", "low", "high"}))
         ->capture_default_str();
+    cmd->add_option("--bones", o->bones,
+                    "user bone library directory (bones.json; docs/bones.md) instead of the "
+                    "default library; needs --resolution low or high");
     cmd->add_option("--seed", o->seed, "seed (non-negative integer)")->expected(1);
     cmd->add_flag("--png", o->png, "also write a PNG preview per skeleton");
     cmd->add_option("--view", o->view, "preview camera: side, front, top, three-quarter");

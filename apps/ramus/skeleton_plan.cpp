@@ -2,6 +2,7 @@
 #include "skeleton_plan.hpp"
 
 #include "json_inputs.hpp"
+#include "ramus/bones.hpp"
 #include "ramus/error.hpp"
 #include "ramus/rng.hpp"
 
@@ -20,6 +21,22 @@ void checkRequest(const SkeletonPlanRequest& r) {
     if (r.loaded && r.inputs.example) {
         throw Error("a saved skeleton and an example: expected at most one source skeleton");
     }
+    // Checked here too, not only when bones are drawn: a box skeleton saves its head kind.
+    try {
+        (void)skullModelForHeadKind(r.inputs.headKind);
+    } catch (const Error& e) {
+        throw Error("head: " + e.message());
+    }
+}
+
+/// The inputs with the head kind an example species implies when none is given (the skull of
+/// its class, defaultHeadKind). It lands in the design, so saved metadata keeps it.
+SkeletonInputs withExampleHead(const SkeletonStats& stats, SkeletonInputs inputs) {
+    if (!inputs.example || !inputs.headKind.empty()) return inputs;
+    if (const SpeciesRecord* species = findSpecies(stats.species(), *inputs.example)) {
+        inputs.headKind = std::string(defaultHeadKind(species->animalClass));
+    }
+    return inputs;  // an unknown species fails in designSkeleton, naming the known ones
 }
 
 using Type = nlohmann::json::value_t;
@@ -109,18 +126,19 @@ std::vector<PlannedSkeleton> planSkeletons(const SkeletonStats& stats,
         return {{loaded->design, name, loaded->seed}};
     }
     const std::uint64_t seed = request.seed ? *request.seed : (loaded ? loaded->seed : 1);
+    const SkeletonInputs inputs = withExampleHead(stats, request.inputs);
     std::optional<SkeletonDesign> source;
     if (loaded) source = loaded->design;
     if (!source && request.variations) {
         Rng rng = Rng::forStream(seed, ~std::uint64_t{0});
-        source = designSkeleton(stats, request.inputs, rng);
+        source = designSkeleton(stats, inputs, rng);
     }
     std::vector<PlannedSkeleton> plan;
     plan.reserve(static_cast<std::size_t>(request.count));
     for (int i = 0; i < request.count; ++i) {
         Rng rng = Rng::forStream(seed, static_cast<std::uint64_t>(i));
-        SkeletonDesign design = source ? varySkeletonDesign(stats, *source, request.inputs, rng)
-                                       : designSkeleton(stats, request.inputs, rng);
+        SkeletonDesign design = source ? varySkeletonDesign(stats, *source, inputs, rng)
+                                       : designSkeleton(stats, inputs, rng);
         plan.push_back({std::move(design), request.name + std::to_string(i), seed});
     }
     return plan;

@@ -33,9 +33,10 @@ struct PlannedSkeleton {
 
 /// The designs of a request, in order. Skeleton i draws from Rng::forStream(seed, i), a
 /// variations source from the stream ~0, so any subset regenerates the same designs. A loaded
-/// skeleton without variations gives exactly it once. Throws Error for inconsistent requests
-/// (count < 1, variations without a source, a loaded skeleton with count > 1 but no
-/// variations, both a loaded skeleton and an example).
+/// skeleton without variations gives exactly it once. An example species without a head kind
+/// gets the skull of its class (defaultHeadKind), saved in the designs. Throws Error for
+/// inconsistent requests (count < 1, variations without a source, a loaded skeleton with
+/// count > 1 but no variations, both a loaded skeleton and an example, an unknown head kind).
 std::vector<PlannedSkeleton> planSkeletons(const SkeletonStats& stats,
                                            const SkeletonPlanRequest& request);
 

@@ -8,7 +8,7 @@
 #include "ramus/file_util.hpp"
 #include "ramus/render.hpp"
 #include "ramus/tree_json.hpp"
-#include "ramus/welded_mesher.hpp"
+#include "ramus/tree_textures.hpp"
 
 namespace ramus::cli {
 
@@ -74,8 +74,9 @@ void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params) {
         ->expected(0);
 }
 
-void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const Mesh& mesh,
+void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const TreeModel& model,
                       const TubeMeshParams& meshParams) {
+    const Mesh& mesh = model.mesh;
     if (mesh.positions.empty() && (!outputs.model.empty() || !outputs.png.empty())) {
         std::fprintf(stderr, "warning: the tree has no drawn branches; the model is empty\n");
     }
@@ -87,12 +88,13 @@ void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const 
         render.width = size.width;
         render.height = size.height;
     }
-    const Scene scene = makeSingleMeshScene(mesh, "tree");
-    if (!outputs.model.empty()) writeScene(scene, outputs.model);
+    if (!outputs.model.empty()) writeScene(model.scene(), outputs.model);
     if (!outputs.treeJson.empty()) {
         writeFileAtomic(outputs.treeJson, encodeTreeJson(tree, computeEdgeRadii(tree, meshParams)));
     }
-    if (!outputs.png.empty()) writePng(renderScene(scene, render), outputs.png);
+    if (!outputs.png.empty()) {
+        writePng(renderScene(makeSingleMeshScene(mesh, "tree"), render), outputs.png);
+    }
 }
 
 void StageTimer::lap(std::string name) {
@@ -105,50 +107,251 @@ void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer) {
     for (const auto& [name, seconds] : timer.stages()) stats[name + "_seconds"] = seconds;
 }
 
-void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const StageTimer& timer) {
-    counts["vertices"] = mesh.vertexCount();
-    counts["triangles"] = mesh.triangleCount();
+void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model,
+                    const StageTimer& timer) {
+    counts["vertices"] = model.mesh.vertexCount();
+    counts["triangles"] = model.mesh.triangleCount();
+    counts["leaf_triangles"] = primitiveTriangles(model.mesh, "leaves");
+    if (!model.lods.empty()) {
+        nlohmann::ordered_json lods = nlohmann::ordered_json::array();
+        for (const TreeLod& lod : model.lods) lods.push_back(lod.mesh.triangleCount());
+        counts["lod_triangles"] = lods;
+    }
     addStageSeconds(counts, timer);
     std::printf("%s\n", counts.dump().c_str());
 }
 
 namespace {
 
-Mesh branchMesh(const BranchTree& tree, const TubeMeshParams& params, Junctions junctions) {
-    if (junctions == Junctions::Tubes) return buildTubeMesh(tree, params);
-    WeldedMeshParams welded;
-    welded.tube = params;
-    return buildWeldedTreeMesh(tree, welded);
+TreeMeshInput plantInput(const TurtleResult& shape) {
+    return TreeMeshInput{&shape.tree, shape.polygonVertices, shape.polygonOffsets,
+                         shape.polygonNodes};
+}
+
+std::vector<TreeMeshInput> forestInputs(const std::vector<BranchTree>& trees) {
+    std::vector<TreeMeshInput> inputs;
+    for (const BranchTree& tree : trees) inputs.push_back(TreeMeshInput{&tree, {}, {}, {}});
+    return inputs;
+}
+
+TreeModel modelOf(std::span<const TreeMeshInput> inputs, const TreeMeshParams& params,
+                  const std::vector<double>& lods) {
+    TreeModel model;
+    if (lods.empty()) {
+        model.mesh = buildTreeMesh(inputs, params);
+        return model;
+    }
+    model.lods = buildTreeLods(inputs, params, lods);
+    model.mesh = model.lods.front().mesh;
+    model.mesh.name = "tree";
+    return model;
 }
 
 }  // namespace
 
-void addJunctionOption(CLI::App& command, Junctions& junctions) {
-    command
-        .add_option(
-            "--weld",
-            [&junctions](const CLI::results_t&) {
-                junctions = Junctions::Welded;
-                return true;
-            },
-            "mesh each tree as one closed surface (welded junctions) instead of overlapping "
-            "tubes")
-        ->expected(0);
+TreeModel plantModel(const TurtleResult& shape, const TreeMeshParams& params,
+                     const std::vector<double>& lods) {
+    const TreeMeshInput input = plantInput(shape);
+    return modelOf({&input, 1}, params, lods);
 }
 
-Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params, Junctions junctions) {
-    Mesh mesh = branchMesh(shape.tree, params, junctions);
-    if (shape.polygonCount() > 0) {
-        appendMesh(mesh, buildPolygonMesh(shape.polygonVertices, shape.polygonOffsets));
+TreeModel forestModel(const std::vector<BranchTree>& trees, const TreeMeshParams& params,
+                      const std::vector<double>& lods) {
+    return modelOf(forestInputs(trees), params, lods);
+}
+
+Scene TreeModel::scene() const {
+    if (lods.empty()) return makeSingleMeshScene(mesh, "tree");
+    Scene scene;
+    SceneNode root;
+    root.name = "tree";
+    scene.nodes.push_back(root);
+    for (std::size_t i = 0; i < lods.size(); ++i) {
+        scene.meshes.push_back(lods[i].mesh);
+        SceneNode node;
+        node.name = lods[i].mesh.name;
+        node.parent = 0;
+        node.mesh = static_cast<int>(i);
+        nlohmann::ordered_json extras;
+        extras["lod"] = i;
+        extras["ratio"] = lods[i].ratio;
+        extras["triangles"] = lods[i].mesh.triangleCount();
+        extras["target_triangles"] = lods[i].targetTriangles;
+        node.extrasJson = extras.dump();
+        scene.nodes.push_back(std::move(node));
     }
-    return mesh;
+    return scene;
 }
 
-Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params,
-                Junctions junctions) {
-    Mesh mesh;
-    for (const BranchTree& tree : trees) appendMesh(mesh, branchMesh(tree, params, junctions));
-    return mesh;
+namespace {
+
+// "1,0.4,0.15" → ratios in (0, 1].
+std::vector<double> parseLodRatios(const std::string& text) {
+    std::vector<double> ratios;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, comma - start);
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(item, value) || !(value > 0.0 && value <= 1.0)) {
+            throw Error("--lods: invalid ratio '" + item +
+                        "'; expected comma-separated numbers in (0, 1], e.g. 1,0.4,0.15");
+        }
+        ratios.push_back(value);
+        start = comma + 1;
+    }
+    if (ratios.size() > 16)
+        throw Error("--lods: " + std::to_string(ratios.size()) + " levels; expected at most 16");
+    return ratios;
+}
+
+std::array<float, 4> parseAtlas(const std::string& text) {
+    std::array<float, 4> atlas{};
+    std::size_t start = 0;
+    for (int i = 0; i < 4; ++i) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        double value = -1.0;
+        if (start > text.size() ||
+            !CLI::detail::lexical_cast(text.substr(start, comma - start), value) ||
+            !(value >= 0.0 && value <= 1.0) || (i == 3 && comma != text.size())) {
+            throw Error("--leaf-atlas: invalid region '" + text +
+                        "'; expected u0,v0,u1,v1 with each in [0, 1], e.g. 0,0,0.5,0.5");
+        }
+        atlas[i] = static_cast<float>(value);
+        start = comma + 1;
+    }
+    if (!(atlas[2] > atlas[0] && atlas[3] > atlas[1])) {
+        throw Error("--leaf-atlas: region '" + text + "' is empty; expected u1 > u0 and v1 > v0");
+    }
+    return atlas;
+}
+
+// The default textures, made once per process (they are pure functions of fixed settings).
+const TreeTextures& defaultTextures() {
+    static const TreeTextures textures = makeTreeTextures();
+    return textures;
+}
+
+}  // namespace
+
+void addAssetOptions(CLI::App& command, AssetOptions& o) {
+    o.command = &command;
+    command.add_flag("--leaves", o.leaves, "generate leaves near the branch tips (docs/export.md)");
+    command.add_option("--leaf-shape", o.leafShape, "blade (12 triangles) or card (a quad)")
+        ->check(CLI::IsMember({"blade", "card"}));
+    command.add_option("--leaves-per-tip", o.leaf.perTip, "leaves at every tip")
+        ->check(CLI::Range(0, 1000));
+    command
+        .add_option("--leaves-per-length", o.leaf.perLength,
+                    "leaves per model unit along branches near tips")
+        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
+    command
+        .add_option("--leaf-zone", o.leaf.zone,
+                    "distance from a tip where --leaves-per-length applies (0 = 4 leaf lengths)")
+        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
+    command.add_option("--leaf-size", o.leaf.size, "leaf length (0 = the mean edge length)")
+        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
+    command.add_option("--leaf-width", o.leaf.widthRatio, "leaf width / length")
+        ->check(finiteNumber(0.0, false, 4.000001, "a number in (0, 4]"));
+    command
+        .add_option("--phyllotaxis", o.leaf.phyllotaxisDegrees,
+                    "azimuth step between leaves, degrees (137.5 = golden angle)")
+        ->check(finiteNumber(-360.000001, false, 360.000001, "an angle in [-360, 360]"));
+    command
+        .add_option("--leaf-tilt", o.leaf.tiltDegrees, "angle of a leaf from its branch, degrees")
+        ->check(finiteNumber(-180.000001, false, 180.000001, "an angle in [-180, 180]"));
+    command.add_option("--leaf-seed", o.leaf.seed, "seed of the leaves' random variation");
+    command.add_option("--leaf-atlas", o.atlas, "leaf texture region u0,v0,u1,v1 (glTF UVs)");
+    command.add_flag("--wind", o.wind,
+                     "write wind vertex attributes _WIND, _WIND_PIVOT, _WIND_LEAF");
+    command.add_flag("--no-textures", o.noTextures, "no procedural bark and leaf textures");
+    command.add_flag("--weld", o.weld,
+                     "mesh each tree as one closed surface (welded junctions, docs/welded.md) "
+                     "instead of overlapping tubes");
+    command
+        .add_option("--uv-aspect", o.uvAspect,
+                    "bark texture height / width (default: the built-in texture's, 2)")
+        ->check(finiteNumber(0.0, false, 1e6, "a number in (0, 1e6]"));
+    command.add_option("--lods", o.lods, "levels of detail as triangle ratios, e.g. 1,0.4,0.15");
+}
+
+AssetSettings applyAssetOptions(const TubeMeshParams& tube, const AssetOptions& o,
+                                AssetSettings s) {
+    const CLI::App& c = *o.command;
+    const TubeMeshParams base = s.mesh.tube;
+    s.mesh.tube = tube;
+    s.mesh.tube.uvAspect = base.uvAspect;
+    s.mesh.tube.windAttributes = base.windAttributes || c.count("--wind") > 0;
+    LeafParams& leaf = s.mesh.leaf;
+    if (c.count("--leaves")) s.mesh.leaves = true;
+    if (!o.leafShape.empty()) leaf.shape = parseLeafShape(o.leafShape);
+    if (c.count("--leaves-per-tip")) leaf.perTip = o.leaf.perTip;
+    if (c.count("--leaves-per-length")) leaf.perLength = o.leaf.perLength;
+    if (c.count("--leaf-zone")) leaf.zone = o.leaf.zone;
+    if (c.count("--leaf-size")) leaf.size = o.leaf.size;
+    if (c.count("--leaf-width")) leaf.widthRatio = o.leaf.widthRatio;
+    if (c.count("--phyllotaxis")) leaf.phyllotaxisDegrees = o.leaf.phyllotaxisDegrees;
+    if (c.count("--leaf-tilt")) leaf.tiltDegrees = o.leaf.tiltDegrees;
+    if (c.count("--leaf-seed")) leaf.seed = o.leaf.seed;
+    if (!o.atlas.empty()) leaf.atlas = parseAtlas(o.atlas);
+    if (c.count("--no-textures")) s.textures = false;
+    if (c.count("--uv-aspect")) {
+        s.mesh.tube.uvAspect = o.uvAspect;
+        s.uvAspectGiven = true;
+    }
+    if (!o.lods.empty()) s.lods = parseLodRatios(o.lods);
+    if (c.count("--weld")) s.mesh.weldJunctions = true;
+    return finishAssets(std::move(s));
+}
+
+AssetSettings configAssets(const ColonizeConfig& config) {
+    AssetSettings s;
+    const ColonizeConfig::MeshOverrides& m = config.mesh;
+    s.mesh.tube.windAttributes = m.hasWind && m.wind;
+    if (m.hasUvAspect) {
+        s.mesh.tube.uvAspect = m.uvAspect;
+        s.uvAspectGiven = true;
+    }
+    if (m.hasTextures) s.textures = m.textures;
+    s.mesh.weldJunctions = m.hasWeld && m.weld;
+    s.lods = m.lods;
+    s.mesh.leaves = config.hasLeaves;
+    if (config.hasLeaves) s.mesh.leaf = config.leaves;
+    if (config.hasGround) s.mesh.leaf.minHeight = config.ground;  // bare root systems
+    return s;
+}
+
+AssetSettings colonizeAssets(const ColonizeConfig& config) {
+    AssetSettings s = configAssets(config);
+    TubeMeshParams tube;
+    applyMeshOverrides(config, tube);
+    tube.uvAspect = s.mesh.tube.uvAspect;
+    tube.windAttributes = s.mesh.tube.windAttributes;
+    s.mesh.tube = tube;
+    return finishAssets(std::move(s));
+}
+
+AssetSettings finishAssets(AssetSettings s) {
+    validateLeafParams(s.mesh.leaf);
+    if (s.mesh.weldJunctions && s.mesh.tube.windAttributes) {
+        throw Error(
+            "welded junctions (--weld, mesh.weld) and wind data (--wind, mesh.wind) together "
+            "are not supported: the welded mesher writes no wind attributes; expected one of "
+            "them");
+    }
+    if (s.textures) {
+        const TreeTextures& t = defaultTextures();
+        Material& bark = s.mesh.tube.material;
+        bark.baseColor = Vec4f::Ones();
+        bark.baseColorTexture = t.barkColor;
+        bark.normalTexture = t.barkNormal;
+        if (!s.uvAspectGiven) s.mesh.tube.uvAspect = t.barkAspect;
+        LeafParams& leaf = s.mesh.leaf;
+        leaf.material.baseColor = Vec4f::Ones();
+        leaf.material.baseColorTexture = t.leafColor;
+        leaf.material.alphaMask = true;
+    }
+    return s;
 }
 
 }  // namespace ramus::cli

@@ -10,7 +10,10 @@
 #include <vector>
 
 #include "ramus/branch_tree.hpp"
+#include "ramus/colonize.hpp"
 #include "ramus/mesh.hpp"
+#include "ramus/scene.hpp"
+#include "ramus/tree_asset.hpp"
 #include "ramus/tube_mesher.hpp"
 #include "ramus/turtle.hpp"
 
@@ -27,20 +30,64 @@ struct TreeOutputs {
     bool any() const { return !model.empty() || !treeJson.empty() || !png.empty(); }
 };
 
-/// How branch nodes are meshed: a tube per chain, overlapping at branchings (buildTubeMesh),
-/// or one closed surface per tree (buildWeldedTreeMesh, flag --weld).
-enum class Junctions { Tubes, Welded };
+/// A grown tree's meshes: the full mesh, or levels of detail.
+struct TreeModel {
+    Mesh mesh;                  ///< full detail (LOD 0 when there are LODs); previews draw it
+    std::vector<TreeLod> lods;  ///< empty without --lods
+    /// What -o writes: one node "tree" with the mesh, or a node "tree" with one child node
+    /// "tree_LOD<i>" per level (extras: lod, ratio, triangles, target_triangles).
+    Scene scene() const;
+};
 
-/// The mesh of an interpreted L-system: tapered tubes plus its `{ . }` polygons.
-Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params,
-               Junctions junctions = Junctions::Tubes);
+/// The model of an L-system or of a forest: buildTreeMesh, or buildTreeLods for `lods`.
+TreeModel plantModel(const TurtleResult& shape, const TreeMeshParams& params,
+                     const std::vector<double>& lods);
+TreeModel forestModel(const std::vector<BranchTree>& trees, const TreeMeshParams& params,
+                      const std::vector<double>& lods);
 
-/// The tubes of several trees (colonization roots) in one mesh.
-Mesh forestMesh(const std::vector<BranchTree>& trees, const TubeMeshParams& params,
-                Junctions junctions = Junctions::Tubes);
+/// Flags of the asset features (issue 9): leaves, wind, textures, LODs.
+struct AssetOptions {
+    LeafParams leaf;
+    std::string leafShape;
+    std::string atlas;
+    double uvAspect = 1.0;
+    std::string lods;  ///< "1,0.4,0.15"
+    bool leaves = false, wind = false, noTextures = false, weld = false;
+    CLI::App* command = nullptr;
+};
 
-/// Registers --weld (welded junctions instead of overlapping tubes).
-void addJunctionOption(CLI::App& command, Junctions& junctions);
+/// Registers --leaves, --leaf-shape, --leaves-per-tip, --leaves-per-length, --leaf-zone,
+/// --leaf-size, --leaf-width, --phyllotaxis, --leaf-tilt, --leaf-seed, --leaf-atlas, --wind,
+/// --no-textures, --uv-aspect, --lods, --weld.
+void addAssetOptions(CLI::App& command, AssetOptions& options);
+
+/// Asset settings before the flags: defaults, or what a colonization config says.
+struct AssetSettings {
+    TreeMeshParams mesh;
+    bool textures = true;        ///< attach the default bark and leaf textures
+    bool uvAspectGiven = false;  ///< else uvAspect follows the bark texture
+    std::vector<double> lods;    ///< empty = no LODs
+};
+
+/// `base` with `tube` as its tube settings (keeping base's uvAspect and wind), then the asset
+/// flags that were given, then the default textures unless disabled: bark colour and normal
+/// map (baseColor white, uvAspect = their height / width unless given) and the leaf texture
+/// with an alpha mask.
+AssetSettings applyAssetOptions(const TubeMeshParams& tube, const AssetOptions& options,
+                                AssetSettings base);
+
+/// The asset settings a colonization config gives (its "mesh" asset keys and "leaves"),
+/// before any flags: what `ramus colonize` starts from and what batches use as they are.
+AssetSettings configAssets(const ColonizeConfig& config);
+
+/// `s` finished without flags: the default textures unless s.textures is false, and the
+/// combination checks of applyAssetOptions (batches and the studio use this).
+AssetSettings finishAssets(AssetSettings s);
+
+/// Everything a colonization config says about its asset, without flags: its "mesh" object
+/// (tube settings and asset keys) and "leaves", finished — so a batch item or a studio request
+/// gives the same asset as `ramus colonize CONFIG` without flags.
+AssetSettings colonizeAssets(const ColonizeConfig& config);
 
 /// Registers -o, --tree-json, --png, --view, --size.
 void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs);
@@ -48,8 +95,8 @@ void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs);
 /// Registers the mesher's flags (--leaf-radius, --radius-exponent, …) on `command`.
 void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params);
 
-/// Writes every requested output for `tree` and its already built `mesh`.
-void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const Mesh& mesh,
+/// Writes every requested output for `tree` and its already built `model`.
+void writeTreeOutputs(const TreeOutputs& outputs, const BranchTree& tree, const TreeModel& model,
                       const TubeMeshParams& meshParams);
 
 /// Wall-clock seconds of a command's stages, in order, for --stats.
@@ -70,8 +117,9 @@ private:
 /// Adds "<stage>_seconds" for every stage of `timer` to `stats`.
 void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer);
 
-/// Prints --stats as one JSON line: `counts` (in their order), the mesh's "vertices" and
-/// "triangles", then "<stage>_seconds" for every stage of `timer`.
-void printTreeStats(nlohmann::ordered_json counts, const Mesh& mesh, const StageTimer& timer);
+/// Prints --stats as one JSON line: `counts` (in their order), the mesh's "vertices",
+/// "triangles", "leaf_triangles" and, with LODs, "lod_triangles", then "<stage>_seconds" for
+/// every stage of `timer`.
+void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model, const StageTimer& timer);
 
 }  // namespace ramus::cli

@@ -12,7 +12,8 @@
 // The default library is ours (no third-party meshes): every model is a blend of smooth
 // signed-distance shapes, meshed once per process and resolution and reused. A user library is
 // a directory with a manifest (docs/bones.md) naming per model an OBJ or glTF file and its
-// offsets, so models and offsets are swappable without code changes (the thesis's wish).
+// offsets, so models and offsets are swappable without code changes (the thesis's wish);
+// writeBoneLibrary writes the default library out as such a directory, a template to edit.
 #pragma once
 
 #include <array>
@@ -126,15 +127,22 @@ private:
     std::array<std::array<std::shared_ptr<const BoneModel>, 2>, kBoneModelKindCount> models_{};
 };
 
-/// Loads a user library: `directory`/bones.json (docs/bones.md) names per model kind and
-/// resolution a mesh file (.obj, .gltf or .glb, relative to the directory) and its offsets.
-/// Models the manifest leaves out come from the default library. Throws Error naming the file,
-/// the entry and what is missing or wrong (unknown kind, missing file, open mesh, bad offset).
-BoneLibrary loadBoneLibrary(const std::string& directory);
+/// Loads a user library at a resolution (Low or High; like builtin, the library holds only
+/// that resolution's models): `directory`/bones.json (docs/bones.md "User bone libraries")
+/// names per model kind a mesh file (.obj, .gltf or .glb, relative to the directory) for both
+/// resolutions or one per resolution, and the model's offsets. Kinds the manifest leaves out
+/// come from BoneLibrary::builtin(resolution). Every loaded mesh is checked (closed, outward,
+/// no degenerate triangles). Throws Error naming the file (the manifest with line and column,
+/// or the mesh file) and what is missing or wrong (unknown kind, missing mesh or offset, file
+/// not found, open or inward mesh, bad offset, unsupported version).
+BoneLibrary loadBoneLibrary(const std::string& directory, BoneResolution resolution);
 
-/// Writes `library`'s models at Low and High as OBJ files plus bones.json into `directory`
-/// (created if missing; files written atomically), so that loadBoneLibrary(directory)
-/// reproduces every model (positions and normals to float precision, identical topology).
+/// Writes `library`'s models as OBJ files (`low/<kind>.obj`, `high/<kind>.obj`, floats in the
+/// shortest form that reads back identical) plus bones.json into `directory` (created if
+/// missing; every file written atomically, the manifest last), so that loadBoneLibrary
+/// reproduces every model exactly (positions, normals, triangles, offsets). Kinds the library
+/// lacks at both resolutions are left out. Throws Error when a kind's low and high models have
+/// different offsets (a manifest entry has one set) or a file cannot be written.
 void writeBoneLibrary(const BoneLibrary& library, const std::string& directory);
 
 /// Which model a bone gets (seed 000 §5.6): vertebrae → Vertebra (the third-last tail vertebra

@@ -10,6 +10,7 @@
 
 #include "ramus/branch_tree.hpp"
 #include "ramus/envelope.hpp"
+#include "ramus/leaves.hpp"
 #include "ramus/math.hpp"
 #include "ramus/tube_mesher.hpp"
 
@@ -111,10 +112,27 @@ struct ColonizeConfig {
     struct MeshOverrides {
         bool hasLeafRadius = false, hasRadiusExponent = false, hasTrunkMultiplier = false;
         bool hasMinSegments = false, hasMaxSegments = false, hasCapTips = false;
+        bool hasUvAspect = false, hasWind = false, hasTextures = false, hasWeld = false;
         double leafRadius = 0.0, radiusExponent = 2.0, trunkMultiplier = 1.0;
         int minSegments = 4, maxSegments = 16;
         bool capTips = true;
+        double uvAspect = 1.0;     ///< "uv_aspect": bark texture height / width
+        bool wind = false;         ///< "wind": write the wind attributes
+        bool textures = true;      ///< "textures": embed the procedural bark and leaf textures
+        bool weld = false;         ///< "weld": welded junctions (one closed surface per tree)
+        std::vector<double> lods;  ///< "lods": triangle ratios of the levels; empty = no LODs
     } mesh;
+
+    /// The "leaves" object: generate leaves with these settings (docs/colonize.md).
+    bool hasLeaves = false;
+    LeafParams leaves;
+
+    /// "ground": points below this height (y, model units) grow each tree's root system from
+    /// its root node instead of its crown; with "root_growth" settings (the crown's growth keys
+    /// by default, with tropism [0, 0, 0]). Not given: every point feeds the crown.
+    bool hasGround = false;
+    double ground = 0.0;
+    ColonizeParams rootGrowth;
 };
 
 /// Applies the config's "mesh" object to `params`: only the keys the config has are set.
@@ -135,6 +153,10 @@ ColonizeConfig loadColonizeConfig(const std::string& path);
 std::vector<Vec3> configAttractionPoints(const ColonizeConfig& config);
 
 /// Grows the config's trees and applies its post-processing (angle then curve reduction).
+/// With a ground height, the points below it grow root systems from the same roots (a second
+/// colonize run with config.rootGrowth), which are joined into each tree as further children of
+/// its root node (so a root system is a side branch of branch depth 1); the counts of `result`
+/// then cover both runs.
 ColonizeResult growFromConfig(const ColonizeConfig& config, std::span<const Vec3> points);
 
 }  // namespace ramus

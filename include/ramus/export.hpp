@@ -15,7 +15,10 @@ std::string encodeGlb(const Scene& scene);
 void writeGlb(const Scene& scene, const std::string& path);
 
 /// Writes `path` (.obj) and the material library next to it (same stem, .mtl), both
-/// atomically. Nodes' transforms are applied to the vertices; one `o`/`g` group per node.
+/// atomically. Nodes' transforms are applied to the vertices; one `o`/`g` group per node, except
+/// that a skinned mesh gets one group per joint, named like the joint's node (a skeleton's
+/// bones: "thigh_L", …), holding the triangles whose first corner is bound most strongly to
+/// that joint and the vertices they use; materials are `usemtl` lines within the groups.
 void writeObj(const Scene& scene, const std::string& path);
 
 /// Writes .glb or .obj depending on the extension of `path` (case-insensitive); anything else

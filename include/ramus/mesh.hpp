@@ -3,20 +3,45 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "ramus/image.hpp"
 #include "ramus/math.hpp"
 
 namespace ramus {
 
-/// A PBR metallic-roughness material (maps 1:1 to glTF's; OBJ export writes Kd from baseColor).
+/// A PBR metallic-roughness material (maps 1:1 to glTF's; OBJ export writes Kd from baseColor
+/// and the textures as PNG files next to the OBJ).
 struct Material {
     std::string name = "material";
     Vec4f baseColor{0.8f, 0.8f, 0.8f, 1.0f};  ///< linear RGBA
     float metallic = 0.0f;
     float roughness = 0.9f;
     bool doubleSided = false;
+    /// glTF alphaMode MASK: fragments whose alpha (baseColor alpha × texture alpha) is below
+    /// alphaCutoff are discarded, the rest are opaque (leaf cards). Without it a baseColor alpha
+    /// below 1 is written as BLEND.
+    bool alphaMask = false;
+    float alphaCutoff = 0.5f;  ///< in [0, 1]; only with alphaMask
+    /// Multiplies baseColor (glTF baseColorTexture, sampled with TEXCOORD_0, wrapping REPEAT);
+    /// shared so copies of meshes (LODs, appended meshes) do not copy pixels. Null = none.
+    std::shared_ptr<const Image> baseColorTexture = nullptr;
+    /// Tangent-space normal map (glTF normalTexture; +Y = image up, needs normals and tangents).
+    std::shared_ptr<const Image> normalTexture = nullptr;
+};
+
+/// Whether two materials are the same (all fields equal; textures by identity).
+bool sameMaterial(const Material& a, const Material& b);
+
+/// A custom per-vertex attribute, written to glTF as an application-specific attribute (its
+/// name starts with '_', glTF 2.0 §3.7.2.1) of FLOAT components; OBJ export ignores it.
+struct VertexAttribute {
+    std::string name;           ///< e.g. "_WIND"; must start with '_', unique within the mesh
+    int components = 1;         ///< 1..4 floats per vertex (glTF SCALAR, VEC2, VEC3, VEC4)
+    std::vector<float> values;  ///< components × vertex count, vertex-major
 };
 
 /// A range of the index buffer drawn with one material (glTF primitive / OBJ usemtl group).
@@ -41,6 +66,7 @@ struct Mesh {
     std::vector<Vec2f> uvs;
     std::vector<std::array<std::uint16_t, 4>> joints;  ///< per vertex: 4 indices into Skin::joints
     std::vector<Vec4f> weights;                        ///< per vertex: the 4 joints' weights
+    std::vector<VertexAttribute> attributes;  ///< custom attributes (e.g. wind data), any number
     std::vector<std::uint32_t> indices;
     std::vector<MeshPrimitive> primitives;  ///< cover indices; empty = one primitive, material 0
     std::vector<Material> materials;
@@ -50,10 +76,19 @@ struct Mesh {
     Aabb bounds() const;
 };
 
+/// The custom attribute called `name`, or null.
+const VertexAttribute* findAttribute(const Mesh& mesh, std::string_view name);
+
 /// Appends `other` to `mesh` (indices, primitives and materials re-based). Attribute arrays
 /// that one side lacks are dropped from the result unless both have them (joints and weights
-/// are kept or dropped together). Joint indices are copied unchanged: both meshes must refer to
-/// the same Skin.
+/// are kept or dropped together; custom attributes are matched by name and component count).
+/// Joint indices are copied unchanged: both meshes must refer to the same Skin.
 void appendMesh(Mesh& mesh, const Mesh& other);
+
+/// Merges primitives that draw with the same material (sameMaterial) into one, in the order of
+/// their first appearance, reordering the index buffer accordingly; duplicate materials are
+/// removed. Triangles and vertices are unchanged, so e.g. several trees appended into one mesh
+/// end with one "bark" primitive. A mesh without primitives is left as it is.
+void mergePrimitivesByMaterial(Mesh& mesh);
 
 }  // namespace ramus

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ramus/image.hpp"
 #include "ramus/scene.hpp"
 
 namespace ramus {
@@ -42,19 +43,14 @@ struct RenderParams {
     bool groundShadow = false;                 ///< reserved for skeleton previews
 };
 
-/// An 8-bit RGBA image, rows top to bottom.
-struct Image {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint8_t> rgba;
-};
-
 /// Renders the scene (all nodes with meshes, world transforms applied) with an orthographic
 /// camera fitted to its bounds. An empty scene gives an image of the background colour.
 /// Lighting: ambient + a key and a fill light fixed to the camera (Lambert) times the material's
-/// base colour, written as sRGB; 3×3 supersampling. Back faces of single-sided materials are
-/// culled; double-sided materials are lit from the side facing the camera. Alpha is ignored
-/// (opaque). Throws Error for sizes outside 1..16384 or a scene that fails the exporters'
+/// base colour (times its baseColorTexture, sampled nearest with REPEAT, when the mesh has
+/// uvs), written as sRGB; 3×3 supersampling. Back faces of single-sided materials are culled;
+/// double-sided materials are lit from the side facing the camera. Alpha-masked materials
+/// discard samples below their cutoff; other alpha is ignored (opaque). Normal maps are not
+/// used. Throws Error for sizes outside 1..16384 or a scene that fails the exporters'
 /// checks (e.g. indices out of range).
 Image renderScene(const Scene& scene, const RenderParams& params = {});
 

@@ -42,6 +42,10 @@ struct TubeMeshParams {
     /// per tube piece, so texels stay square (uvAspect = texture height / width) and, with
     /// glTF's top-left UV origin, the image's top points along the growth direction.
     double uvAspect = 1.0;
+    /// Write the wind attributes `_WIND`, `_WIND_PIVOT`, `_WIND_LEAF` (include/ramus/tree_wind.hpp,
+    /// docs/export.md); branch phases are hashed from windSeed.
+    bool windAttributes = false;
+    std::uint64_t windSeed = 0;
     Material material{"bark", {0.42f, 0.30f, 0.20f, 1.0f}, 0.0f, 0.95f, false};
 };
 
@@ -64,9 +68,11 @@ Mesh buildTubeMesh(const BranchTree& tree, const TubeMeshParams& params = {});
 /// Newell normal, and `material` is returned with doubleSided = true so the sheet shows from
 /// both sides. UVs span each polygon's bounds (v = 1 at its first vertex, 0 at the farthest
 /// one); tangents w = +1. Polygons with fewer than 3 vertices or no area are skipped; none left
-/// → empty mesh. Layout as TurtleResult: offsets has polygonCount + 1 entries.
-Mesh buildPolygonMesh(std::span<const Vec3> vertices, std::span<const std::uint32_t> offsets,
-                      const Material& material = {
-                          "leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f, 0.8f, true});
+/// → empty mesh. Layout as TurtleResult: offsets has polygonCount + 1 entries. With
+/// `vertexPolygons`, it receives the polygon index of every output vertex.
+Mesh buildPolygonMesh(
+    std::span<const Vec3> vertices, std::span<const std::uint32_t> offsets,
+    const Material& material = {"leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f, 0.8f, true},
+    std::vector<std::uint32_t>* vertexPolygons = nullptr);
 
 }  // namespace ramus

@@ -24,11 +24,13 @@ struct TurtleParams {
 TurtleParams turtleParamsFrom(const LSystemSettings& settings);
 
 /// Result of interpretation. Polygon i has vertices
-/// polygonVertices[polygonOffsets[i] .. polygonOffsets[i+1]).
+/// polygonVertices[polygonOffsets[i] .. polygonOffsets[i+1]) and grows from tree node
+/// polygonNodes[i] (the turtle's node when its `}` closed it; its wind follows that node).
 struct TurtleResult {
     BranchTree tree;  ///< root at the origin; initial heading +Y (up), left −X, up-vector +Z
     std::vector<Vec3> polygonVertices;
     std::vector<std::uint32_t> polygonOffsets{0};
+    std::vector<NodeId> polygonNodes;
 
     std::size_t polygonCount() const { return polygonOffsets.size() - 1; }
 };

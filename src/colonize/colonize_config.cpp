@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "colonize/config_reader.hpp"
 #include "core/json_text.hpp"
 #include "ramus/colonize.hpp"
 #include "ramus/error.hpp"
@@ -21,103 +22,8 @@ namespace ramus {
 
 namespace {
 
+using colonize_detail::ConfigReader;
 using Json = nlohmann::json;
-
-class ConfigReader {
-public:
-    explicit ConfigReader(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-        throw Error(file_ + ": " + path + ": " + message);
-    }
-
-    // Every key of `object` must be in `allowed`.
-    void checkKeys(const Json& object, const std::string& path,
-                   const std::set<std::string>& allowed, const std::string& context) const {
-        for (auto it = object.begin(); it != object.end(); ++it) {
-            if (allowed.count(it.key()) == 0) {
-                std::string list;
-                for (const std::string& k : allowed) list += (list.empty() ? "" : ", ") + k;
-                fail(join(path, it.key()), "unknown key" + context + "; expected one of " + list);
-            }
-        }
-    }
-
-    double number(const Json& value, const std::string& path, double lo, double hi, bool loOpen,
-                  const std::string& units) const {
-        if (!value.is_number())
-            fail(path, "expected a number (" + units + "), got " + value.dump());
-        const double v = value.get<double>();
-        const bool ok = std::isfinite(v) && (loOpen ? v > lo : v >= lo) && v <= hi;
-        if (!ok)
-            fail(path, "out of range; expected " + range(lo, hi, loOpen) + " (" + units +
-                           "), got " + value.dump());
-        return v;
-    }
-
-    std::int64_t integer(const Json& value, const std::string& path, std::int64_t lo,
-                         std::int64_t hi, const std::string& meaning) const {
-        if (!value.is_number_integer()) {
-            fail(path, "expected an integer (" + meaning + "), got " + value.dump());
-        }
-        const bool isUnsigned = value.is_number_unsigned();
-        const auto v =
-            isUnsigned ? static_cast<std::int64_t>(std::min<std::uint64_t>(
-                             value.get<std::uint64_t>(), std::numeric_limits<std::int64_t>::max()))
-                       : value.get<std::int64_t>();
-        if (v < lo || v > hi) {
-            fail(path, "out of range; expected an integer in [" + std::to_string(lo) + ", " +
-                           std::to_string(hi) + "] (" + meaning + "), got " + value.dump());
-        }
-        return v;
-    }
-
-    std::uint64_t seed(const Json& value, const std::string& path) const {
-        if (!value.is_number_unsigned()) {
-            fail(path, "expected a non-negative integer seed, got " + value.dump());
-        }
-        return value.get<std::uint64_t>();
-    }
-
-    bool boolean(const Json& value, const std::string& path) const {
-        if (!value.is_boolean()) fail(path, "expected true or false, got " + value.dump());
-        return value.get<bool>();
-    }
-
-    Vec3 vec3(const Json& value, const std::string& path, double lo, bool loOpen,
-              const std::string& units) const {
-        if (!value.is_array() || value.size() != 3) {
-            fail(path,
-                 "expected an array of 3 numbers [x, y, z] (" + units + "), got " + value.dump());
-        }
-        Vec3 v;
-        for (std::size_t i = 0; i < 3; ++i) {
-            v[static_cast<int>(i)] =
-                number(value[i], path + "[" + std::to_string(i) + "]", lo, kMax, loOpen, units);
-        }
-        return v;
-    }
-
-    static std::string join(const std::string& path, const std::string& key) {
-        return path.empty() ? key : path + "." + key;
-    }
-
-    static constexpr double kMax = std::numeric_limits<double>::max();
-    static constexpr double kLowest = std::numeric_limits<double>::lowest();
-
-private:
-    static std::string range(double lo, double hi, bool loOpen) {
-        std::ostringstream out;
-        if (hi == kMax) {
-            out << (loOpen ? "> " : ">= ") << lo;
-        } else {
-            out << (loOpen ? "(" : "[") << lo << ", " << hi << "]";
-        }
-        return out.str();
-    }
-
-    std::string file_;
-};
 
 ShapeKind parseShapeKind(const ConfigReader& r, const Json& value, const std::string& path) {
     static const std::pair<const char*, ShapeKind> kinds[] = {
@@ -267,8 +173,9 @@ void parseMesh(const ConfigReader& r, const Json& j, ColonizeConfig::MeshOverrid
     if (!j.is_object()) r.fail("mesh", "expected an object, got " + j.dump());
     r.checkKeys(j, "mesh",
                 {"leaf_radius", "radius_exponent", "trunk_multiplier", "min_segments",
-                 "max_segments", "cap_tips"},
+                 "max_segments", "cap_tips", "uv_aspect", "wind", "textures", "weld", "lods"},
                 "");
+    colonize_detail::parseMeshAssetKeys(r, j, m);
     const double kMax = ConfigReader::kMax;
     if ((m.hasLeafRadius = j.contains("leaf_radius"))) {
         m.leafRadius = r.number(j["leaf_radius"], "mesh.leaf_radius", 0.0, kMax, false,
@@ -299,50 +206,67 @@ void parseMesh(const ConfigReader& r, const Json& j, ColonizeConfig::MeshOverrid
         m.capTips = r.boolean(j["cap_tips"], "mesh.cap_tips");
 }
 
-void parseGrowth(const ConfigReader& r, const Json& j, ColonizeParams& p) {
+}  // namespace
+
+namespace colonize_detail {
+
+void parseGrowthKeys(const ConfigReader& r, const Json& j, ColonizeParams& p,
+                     const std::string& prefix) {
+    auto at = [&prefix](const char* key) { return ConfigReader::join(prefix, key); };
     const double kMax = ConfigReader::kMax;
     if (j.contains("influence_radius")) {
-        p.influenceRadius = r.number(j["influence_radius"], "influence_radius", 0.0, kMax, true,
+        p.influenceRadius = r.number(j["influence_radius"], at("influence_radius"), 0.0, kMax, true,
                                      "model units, d_i");
     }
     if (j.contains("kill_radius")) {
         p.killRadius =
-            r.number(j["kill_radius"], "kill_radius", 0.0, kMax, true, "model units, d_k");
+            r.number(j["kill_radius"], at("kill_radius"), 0.0, kMax, true, "model units, d_k");
     }
     if (!(p.killRadius < p.influenceRadius)) {
-        r.fail("kill_radius", "must be below influence_radius " + Json(p.influenceRadius).dump() +
-                                  " (model units), got " + Json(p.killRadius).dump());
+        r.fail(at("kill_radius"), "must be below influence_radius " +
+                                      Json(p.influenceRadius).dump() + " (model units), got " +
+                                      Json(p.killRadius).dump());
     }
-    if (j.contains("step")) p.step = r.number(j["step"], "step", 0.0, kMax, true, "model units, D");
+    if (j.contains("step"))
+        p.step = r.number(j["step"], at("step"), 0.0, kMax, true, "model units, D");
     if (j.contains("tropism")) {
-        p.tropism = r.vec3(j["tropism"], "tropism", ConfigReader::kLowest, false,
+        p.tropism = r.vec3(j["tropism"], at("tropism"), ConfigReader::kLowest, false,
                            "unitless vector T added to the direction sum");
     }
     if (j.contains("max_iterations")) {
         p.maxIterations = static_cast<int>(
-            r.integer(j["max_iterations"], "max_iterations", 0, 100'000'000, "iterations"));
+            r.integer(j["max_iterations"], at("max_iterations"), 0, 100'000'000, "iterations"));
     }
     if (j.contains("max_degree")) {
-        p.maxDegree = static_cast<int>(r.integer(j["max_degree"], "max_degree", 0, 1'000'000,
+        p.maxDegree = static_cast<int>(r.integer(j["max_degree"], at("max_degree"), 0, 1'000'000,
                                                  "children per node; 0 = unlimited"));
     }
     if (j.contains("max_branch_depth")) {
-        p.maxBranchDepth = static_cast<int>(r.integer(j["max_branch_depth"], "max_branch_depth", 0,
-                                                      1'000'000, "branch depth Z; 0 = unlimited"));
+        p.maxBranchDepth =
+            static_cast<int>(r.integer(j["max_branch_depth"], at("max_branch_depth"), 0, 1'000'000,
+                                       "branch depth Z; 0 = unlimited"));
     }
     if (j.contains("max_no_growth")) {
-        p.maxNoGrowth = static_cast<int>(
-            r.integer(j["max_no_growth"], "max_no_growth", 0, 100'000'000, "iterations; 0 = off"));
+        p.maxNoGrowth = static_cast<int>(r.integer(j["max_no_growth"], at("max_no_growth"), 0,
+                                                   100'000'000, "iterations; 0 = off"));
     }
     if (j.contains("weighted_growth")) {
-        p.weightedGrowth = r.boolean(j["weighted_growth"], "weighted_growth");
+        p.weightedGrowth = r.boolean(j["weighted_growth"], at("weighted_growth"));
         if (p.weightedGrowth && p.maxBranchDepth < 1) {
-            r.fail("weighted_growth",
+            r.fail(at("weighted_growth"),
                    "needs max_branch_depth >= 1 (the depth where the step "
                    "falls to D), got max_branch_depth " +
                        std::to_string(p.maxBranchDepth));
         }
     }
+}
+
+}  // namespace colonize_detail
+
+namespace {
+
+void parseGrowth(const ConfigReader& r, const Json& j, ColonizeParams& p) {
+    colonize_detail::parseGrowthKeys(r, j, p, "");
     p.roots = parseRoots(r, j);
 }
 
@@ -379,10 +303,28 @@ ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::strin
     const ConfigReader r(fileName);
     if (!j.is_object()) throw Error(fileName + ": expected a JSON object at the top level");
     r.checkKeys(j, "",
-                {"description", "seed", "influence_radius", "kill_radius", "step", "tropism",
-                 "max_iterations", "max_degree", "max_branch_depth", "max_no_growth",
-                 "weighted_growth", "angle_reduction", "curve_reduction", "root", "roots",
-                 "envelopes", "obstacles", "points_file", "mesh"},
+                {"description",
+                 "seed",
+                 "influence_radius",
+                 "kill_radius",
+                 "step",
+                 "tropism",
+                 "max_iterations",
+                 "max_degree",
+                 "max_branch_depth",
+                 "max_no_growth",
+                 "weighted_growth",
+                 "angle_reduction",
+                 "curve_reduction",
+                 "root",
+                 "roots",
+                 "envelopes",
+                 "obstacles",
+                 "points_file",
+                 "mesh",
+                 "leaves",
+                 "ground",
+                 "root_growth"},
                 "");
     ColonizeConfig c;
     if (j.contains("description") && !j["description"].is_string()) {
@@ -406,6 +348,9 @@ ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::strin
         c.pointsFile = j["points_file"].get<std::string>();
     }
     if (j.contains("mesh")) parseMesh(r, j["mesh"], c.mesh);
+    if ((c.hasLeaves = j.contains("leaves")))
+        colonize_detail::parseLeaves(r, j["leaves"], c.leaves);
+    colonize_detail::parseRootSystem(r, j, c);
     return c;
 }
 
@@ -429,12 +374,48 @@ std::vector<Vec3> configAttractionPoints(const ColonizeConfig& config) {
     return removePointsInside(points, config.obstacles);
 }
 
-ColonizeResult growFromConfig(const ColonizeConfig& config, std::span<const Vec3> points) {
-    ColonizeResult result = colonize(config.params, points, config.obstacles);
+namespace {
+
+ColonizeResult growAndReduce(const ColonizeConfig& config, const ColonizeParams& params,
+                             std::span<const Vec3> points) {
+    ColonizeResult result = colonize(params, points, config.obstacles);
     for (BranchTree& tree : result.trees) {
         if (config.reduceBranchAngles) tree = reduceBranchAngles(tree);
         if (config.curveReduction > 0.0) tree = reduceCurves(tree, config.curveReduction);
     }
+    return result;
+}
+
+// Appends the non-root nodes of `roots` (same root position) below tree's root, in id order.
+void graftRootSystem(BranchTree& tree, const BranchTree& roots) {
+    std::vector<NodeId> id(roots.size(), 0);
+    for (std::size_t i = 1; i < roots.size(); ++i) {
+        const BranchNode& n = roots.nodes()[i];
+        id[i] = tree.addChild(id[static_cast<std::size_t>(n.parent)], n.position);
+    }
+}
+
+}  // namespace
+
+ColonizeResult growFromConfig(const ColonizeConfig& config, std::span<const Vec3> points) {
+    if (!config.hasGround) return growAndReduce(config, config.params, points);
+    std::vector<Vec3> crown, below;
+    for (const Vec3& p : points) (p.y() < config.ground ? below : crown).push_back(p);
+    ColonizeResult result = growAndReduce(config, config.params, crown);
+    if (below.empty()) return result;
+    ColonizeParams rootParams = config.rootGrowth;
+    rootParams.roots = config.params.roots;
+    rootParams.maxNodes = config.params.maxNodes > result.nodeCount()
+                              ? config.params.maxNodes - result.nodeCount()
+                              : 1;
+    const ColonizeResult roots = growAndReduce(config, rootParams, below);
+    for (std::size_t t = 0; t < result.trees.size(); ++t) {
+        graftRootSystem(result.trees[t], roots.trees[t]);
+    }
+    result.attractors += roots.attractors;
+    result.attractorsLeft += roots.attractorsLeft;
+    result.iterations = std::max(result.iterations, roots.iterations);
+    for (const std::string& w : roots.warnings) result.warnings.push_back("root system: " + w);
     return result;
 }
 

@@ -1,13 +1,12 @@
-// Based on: the Wavefront OBJ format ("Object Files (.obj)", Wavefront Advanced Visualizer
-// manual, appendix B: `v` and `f` statements, relative (negative) indices); glTF 2.0 through
-// readGltf (include/ramus/export.hpp). SPEC §C: attraction points inside a closed mesh.
+// Based on: the Wavefront OBJ format through io::parseObjGeometry (`v` and `f` statements,
+// relative indices); glTF 2.0 through readGltf (include/ramus/export.hpp). SPEC §C: attraction
+// points inside a closed mesh.
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <string_view>
 
+#include "io/obj_reader.hpp"
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
@@ -19,106 +18,6 @@ namespace ramus {
 namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
-
-bool isSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
-
-// Whitespace-separated tokens of a line, with their 1-based columns.
-struct Token {
-    std::string_view text;
-    int column;
-};
-
-std::vector<Token> tokenize(std::string_view line) {
-    std::vector<Token> tokens;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && isSpace(line[i])) ++i;
-        const std::size_t start = i;
-        while (i < line.size() && !isSpace(line[i])) ++i;
-        if (i > start)
-            tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
-    }
-    return tokens;
-}
-
-class ObjReader {
-public:
-    explicit ObjReader(const std::string& fileName) : file_(fileName) {}
-
-    void readLine(std::string_view line, int lineNumber) {
-        line_ = lineNumber;
-        const std::size_t hash = line.find('#');
-        if (hash != std::string_view::npos) line = line.substr(0, hash);
-        const std::vector<Token> tokens = tokenize(line);
-        if (tokens.empty()) return;
-        if (tokens[0].text == "v") readVertex(tokens);
-        if (tokens[0].text == "f") readFace(tokens);
-        // Everything else (vt, vn, o, g, s, usemtl, mtllib, l, p, …) does not change the volume.
-    }
-
-    MeshVolume finish() {
-        try {
-            return MeshVolume(std::move(vertices_), std::move(triangles_));
-        } catch (const Error& e) {
-            throw Error(SourceLoc{file_, 0, 0}, e.message());
-        }
-    }
-
-private:
-    [[noreturn]] void fail(int column, const std::string& message) const {
-        throw Error(SourceLoc{file_, line_, column}, message);
-    }
-
-    void readVertex(const std::vector<Token>& tokens) {
-        if (tokens.size() < 4) fail(tokens[0].column, "a vertex needs three coordinates x y z");
-        Vec3 p;
-        for (int k = 0; k < 3; ++k) {
-            const Token& t = tokens[static_cast<std::size_t>(k + 1)];
-            std::string_view s = t.text;
-            if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-            const auto r = std::from_chars(s.data(), s.data() + s.size(), p[k]);
-            if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(p[k])) {
-                fail(t.column,
-                     "invalid coordinate '" + std::string(t.text) + "'; expected a finite number");
-            }
-        }
-        vertices_.push_back(p);
-    }
-
-    // "i", "i/t", "i//n" or "i/t/n"; i is 1-based, or negative counting back from the last.
-    std::uint32_t vertexIndex(const Token& t) const {
-        const std::string_view s = t.text.substr(0, t.text.find('/'));
-        long long i = 0;
-        const auto r = std::from_chars(s.data(), s.data() + s.size(), i);
-        if (r.ec != std::errc() || r.ptr != s.data() + s.size() || i == 0) {
-            fail(t.column, "invalid vertex reference '" + std::string(t.text) +
-                               "'; expected a non-zero integer index");
-        }
-        const auto count = static_cast<long long>(vertices_.size());
-        const long long index = i > 0 ? i - 1 : count + i;
-        if (index < 0 || index >= count) {
-            fail(t.column, "vertex index " + std::to_string(i) + " refers to no vertex (" +
-                               std::to_string(count) + " defined above)");
-        }
-        return static_cast<std::uint32_t>(index);
-    }
-
-    void readFace(const std::vector<Token>& tokens) {
-        if (tokens.size() < 4) fail(tokens[0].column, "a face needs at least three vertices");
-        const std::uint32_t first = vertexIndex(tokens[1]);
-        std::uint32_t previous = vertexIndex(tokens[2]);
-        for (std::size_t k = 3; k < tokens.size(); ++k) {  // fan triangulation
-            const std::uint32_t next = vertexIndex(tokens[k]);
-            triangles_.push_back({first, previous, next});
-            previous = next;
-        }
-    }
-
-    std::string file_;
-    int line_ = 0;
-    std::vector<Vec3> vertices_;
-    std::vector<Triangle> triangles_;
-};
 
 // Every mesh instance of the scene in world coordinates, as one triangle soup.
 MeshVolume sceneVolume(const Scene& scene, const std::string& path) {
@@ -161,18 +60,17 @@ std::string lowerExtension(const std::string& path) {
 }  // namespace
 
 MeshVolume parseObjVolume(const std::string& text, const std::string& fileName) {
-    ObjReader reader(fileName);
-    std::size_t pos = 0;
-    int lineNumber = 0;
-    while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string::npos) end = text.size();
-        std::string_view line(text.data() + pos, end - pos);
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        reader.readLine(line, ++lineNumber);
-        pos = end + 1;
+    io::ObjGeometry obj = io::parseObjGeometry(text, fileName);
+    std::vector<Triangle> triangles;
+    triangles.reserve(obj.triangles.size());
+    for (const auto& t : obj.triangles) {
+        triangles.push_back({t[0].position, t[1].position, t[2].position});
     }
-    return reader.finish();
+    try {
+        return MeshVolume(std::move(obj.positions), std::move(triangles));
+    } catch (const Error& e) {
+        throw Error(SourceLoc{fileName, 0, 0}, e.message());
+    }
 }
 
 MeshVolume readMeshVolume(const std::string& path) {

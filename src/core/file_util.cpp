@@ -1,12 +1,17 @@
 #include "ramus/file_util.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
+#include <thread>
 
 #include "ramus/error.hpp"
 
@@ -26,28 +31,65 @@ std::string readFile(const std::string& path) {
 }
 
 void writeFileAtomic(const std::string& path, std::string_view bytes) {
-    // The temp name only needs to be unique, not reproducible, so a non-deterministic source is
-    // fine here (it never influences the file's contents).
-    std::random_device device;
-    char suffix[32];
-    std::snprintf(suffix, sizeof suffix, ".tmp-%08x", device());
-    const std::string tempPath = path + suffix;
+    writeFileAtomic(path, std::span<const std::string_view>(&bytes, 1));
+}
 
-    std::FILE* file = std::fopen(tempPath.c_str(), "wb");
-    if (!file) throw Error(path + ": cannot write file: " + std::strerror(errno));
-    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-    ok = (std::fflush(file) == 0) && ok;
-    ok = (std::fclose(file) == 0) && ok;
+namespace {
+
+// A temp name suffix ".tmp-xxxxxxxx". It only needs to be unique, not reproducible (it never
+// influences a file's contents): the clock, the process and the thread mixed by SplitMix64's
+// finalizer; O_EXCL below settles the rare collision by trying the next attempt. (A
+// std::random_device per file cost more than writing a small file.)
+std::string tempSuffix(unsigned attempt) {
+    std::uint64_t x =
+        static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+        (static_cast<std::uint64_t>(::getpid()) << 32) ^
+        std::hash<std::thread::id>{}(std::this_thread::get_id()) ^ (std::uint64_t{attempt} << 56);
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    x ^= x >> 31;
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, ".tmp-%08x", static_cast<unsigned>(x));
+    return suffix;
+}
+
+// Writes all of `bytes` to `fd` (write(2) may write less than asked, or be interrupted).
+bool writeAll(int fd, std::string_view bytes) {
+    while (!bytes.empty()) {
+        const ssize_t written = ::write(fd, bytes.data(), bytes.size());
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) return false;
+        bytes.remove_prefix(static_cast<std::size_t>(written));
+    }
+    return true;
+}
+
+}  // namespace
+
+void writeFileAtomic(const std::string& path, std::span<const std::string_view> parts) {
+    std::string tempPath;
+    int fd = -1;
+    for (unsigned attempt = 0; fd < 0 && attempt < 16; ++attempt) {
+        tempPath = path + tempSuffix(attempt);
+        fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && errno != EEXIST) break;
+    }
+    if (fd < 0) throw Error(path + ": cannot write file: " + std::strerror(errno));
+    bool ok = true;
+    for (const std::string_view bytes : parts) ok = ok && writeAll(fd, bytes);
+    int err = ok ? 0 : errno;
+    if (::close(fd) != 0 && ok) {
+        ok = false;
+        err = errno;
+    }
     if (!ok) {
-        const int err = errno;
         std::remove(tempPath.c_str());
         throw Error(path + ": cannot write file: " + std::strerror(err));
     }
-    std::error_code ec;
-    std::filesystem::rename(tempPath, path, ec);
-    if (ec) {
+    if (std::rename(tempPath.c_str(), path.c_str()) != 0) {
+        err = errno;
         std::remove(tempPath.c_str());
-        throw Error(path + ": cannot write file: " + ec.message());
+        throw Error(path + ": cannot write file: " + std::strerror(err));
     }
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ramus/error.hpp"
 
@@ -64,6 +65,100 @@ inline nlohmann::json parseJsonText(std::string_view text, const std::string& fi
         throw Error(sourceLocAtOffset(text, at == std::string_view::npos ? 0 : at, fileName),
                     "number '" + number + "' is out of range; expected a finite number");
     }
+}
+
+namespace json_scan {
+
+inline bool isSpace(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
+
+inline void skipSpace(std::string_view t, std::size_t& i) {
+    while (i < t.size() && isSpace(t[i])) ++i;
+}
+
+// From the opening quote to just past the closing one.
+inline void skipString(std::string_view t, std::size_t& i) {
+    for (++i; i < t.size() && t[i] != '"'; ++i) {
+        if (t[i] == '\\') ++i;
+    }
+    ++i;
+}
+
+inline void skipValue(std::string_view t, std::size_t& i) {
+    skipSpace(t, i);
+    if (i >= t.size()) return;
+    if (t[i] == '"') return skipString(t, i);
+    if (t[i] == '{' || t[i] == '[') {
+        int depth = 0;
+        do {
+            if (t[i] == '"') {
+                skipString(t, i);
+                continue;
+            }
+            if (t[i] == '{' || t[i] == '[') ++depth;
+            if (t[i] == '}' || t[i] == ']') --depth;
+            ++i;
+        } while (i < t.size() && depth > 0);
+        return;
+    }
+    while (i < t.size() && t[i] != ',' && t[i] != '}' && t[i] != ']' && !isSpace(t[i])) ++i;
+}
+
+// In the object starting at t[i]: moves i to the value of `key`; false if there is none.
+inline bool enterMember(std::string_view t, std::size_t& i, std::string_view key) {
+    for (++i;;) {
+        skipSpace(t, i);
+        if (i >= t.size() || t[i] != '"') return false;
+        const std::size_t start = i;
+        skipString(t, i);
+        const std::string_view name = t.substr(start + 1, i - start - 2);
+        skipSpace(t, i);
+        ++i;  // ':'
+        skipSpace(t, i);
+        if (name == key) return true;
+        skipValue(t, i);
+        skipSpace(t, i);
+        if (i < t.size() && t[i] == ',') ++i;
+    }
+}
+
+// In the array starting at t[i]: moves i to element `index`; false if there is none.
+inline bool enterElement(std::string_view t, std::size_t& i, std::string_view index) {
+    std::size_t n = 0;
+    for (char c : index) {
+        if (c < '0' || c > '9') return false;
+        n = n * 10 + static_cast<std::size_t>(c - '0');
+    }
+    ++i;
+    for (std::size_t k = 0;; ++k) {
+        skipSpace(t, i);
+        if (i >= t.size() || t[i] == ']') return false;
+        if (k == n) return true;
+        skipValue(t, i);
+        skipSpace(t, i);
+        if (i < t.size() && t[i] == ',') ++i;
+    }
+}
+
+}  // namespace json_scan
+
+/// Where the value at `path` (object keys and array indices as text, e.g. {"models", "rib",
+/// "child_joints", "0"}) starts in `text`, which must be valid JSON: its line and column, or
+/// those of the deepest value of the path that exists (so a missing key is reported at its
+/// object). Keys are compared as written (escapes are not decoded).
+inline SourceLoc jsonValueLoc(std::string_view text, const std::vector<std::string>& path,
+                              const std::string& fileName) {
+    std::size_t i = 0;
+    json_scan::skipSpace(text, i);
+    std::size_t found = i;
+    for (const std::string& key : path) {
+        if (i >= text.size()) break;
+        std::size_t at = i;
+        const bool entered = (text[i] == '{' && json_scan::enterMember(text, at, key)) ||
+                             (text[i] == '[' && json_scan::enterElement(text, at, key));
+        if (!entered) break;
+        i = found = at;
+    }
+    return sourceLocAtOffset(text, found, fileName);
 }
 
 }  // namespace ramus::detail

@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <span>
 
 #include "io/json_writer.hpp"
@@ -15,6 +16,7 @@
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
+#include "ramus/render.hpp"
 
 namespace ramus {
 
@@ -78,11 +80,6 @@ void normalizeSkinning(const Mesh& mesh, std::vector<std::array<std::uint16_t, 4
     }
 }
 
-bool sameMaterial(const Material& a, const Material& b) {
-    return a.name == b.name && a.baseColor == b.baseColor && a.metallic == b.metallic &&
-           a.roughness == b.roughness && a.doubleSided == b.doubleSided;
-}
-
 // JSON's name for the type of the valid JSON value that starts with `first`.
 const char* jsonTypeName(char first) {
     switch (first) {
@@ -123,6 +120,7 @@ std::size_t binBytesBound(const Scene& scene) {
                  m.tangents.size() * sizeof(Vec4f) + m.uvs.size() * sizeof(Vec2f) +
                  m.joints.size() * sizeof(m.joints[0]) + m.weights.size() * sizeof(Vec4f) +
                  m.indices.size() * sizeof(std::uint32_t) + 7 * 3;
+        for (const VertexAttribute& a : m.attributes) bytes += a.values.size() * 4 + 3;
     }
     for (const Skin& skin : scene.skins) bytes += skin.inverseBindMatrices.size() * 64 + 3;
     return bytes + 3;
@@ -135,7 +133,10 @@ public:
     GlbBuilder(const Scene& scene, std::string context)
         : scene_(scene), context_(std::move(context)) {}
 
-    std::string encode();
+    /// Checks the scene and builds the file (head() then bin()); call once.
+    void encode();
+    std::string_view head() const { return head_; }
+    std::string_view bin() const { return {bin_.get(), binSize_}; }
 
 private:
     // A buffer view of `count` elements of T written by fill(T* destination), 4-byte aligned.
@@ -148,8 +149,9 @@ private:
             bytes, target, [&data, bytes](char* dst) { std::memcpy(dst, data.data(), bytes); });
     }
     int addAccessor(int view, std::size_t byteOffset, int componentType, std::size_t count,
-                    const char* type, const Vec3f* bounds = nullptr);
+                    const char* type, const Vec3f* bounds = nullptr, bool normalized = false);
     int addMaterial(const Material& material);
+    int addTexture(const Image& image);
     void addVertexAttributes(const Mesh& mesh, JsonWriter& attributes);
     void addSkinAttributes(const Mesh& mesh, JsonWriter& attributes);
     int addIndices(const Mesh& mesh);
@@ -159,27 +161,48 @@ private:
     void addSkins();
     void writeName(JsonWriter& w, const std::string& name, const char* owner, std::size_t index);
     void writeDocument(std::string& out);
+    // Makes room for `bytes` in the BIN chunk. The first allocation covers binBytesBound;
+    // only data of unknown size (encoded PNG images) can make it grow.
+    void reserveBin(std::size_t bytes) {
+        if (bytes <= binCapacity_) return;
+        const std::size_t capacity = std::max(bytes, 2 * binCapacity_);
+        std::unique_ptr<char[]> larger(new char[capacity]);
+        if (binSize_ > 0) std::memcpy(larger.get(), bin_.get(), binSize_);
+        bin_ = std::move(larger);
+        binCapacity_ = capacity;
+    }
+    // Pads the BIN chunk with zeros to the next multiple of 4 bytes (views and the chunk end).
+    void alignBin() {
+        while (binSize_ % 4 != 0) bin_[binSize_++] = '\0';
+    }
 
     const Scene& scene_;
     std::string context_;
-    std::string bin_;
+    // The BIN chunk: allocated at binBytesBound (no zero fill; grows only for images); binSize_
+    // bytes are used.
+    std::unique_ptr<char[]> bin_;
+    std::string head_;
+    std::size_t binCapacity_ = 0, binSize_ = 0;
     std::string bufferViewsText_, accessorsText_, materialsText_, meshesText_, nodesText_,
-        skinsText_;
+        skinsText_, imagesText_, texturesText_;
     JsonWriter bufferViews_{bufferViewsText_}, accessors_{accessorsText_},
-        materials_{materialsText_}, meshes_{meshesText_}, nodes_{nodesText_}, skins_{skinsText_};
+        materials_{materialsText_}, meshes_{meshesText_}, nodes_{nodesText_}, skins_{skinsText_},
+        images_{imagesText_}, textures_{texturesText_};
     int bufferViewCount_ = 0, accessorCount_ = 0, meshCount_ = 0;
     std::vector<int> roots_;
     std::vector<Material> materialKeys_;
+    std::vector<const Image*> textureKeys_;  // one glTF image and texture each
 };
 
 template <typename T, typename Fill>
 int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill) {
     static_assert(alignof(T) <= 4, "buffer views are only 4-byte aligned");
-    bin_.resize((bin_.size() + 3) & ~std::size_t{3}, '\0');  // 4-byte aligned views
-    const std::size_t offset = bin_.size();
+    alignBin();
+    const std::size_t offset = binSize_;
     const std::size_t bytes = count * sizeof(T);
-    bin_.resize(offset + bytes);
-    fill(reinterpret_cast<T*>(bin_.data() + offset));
+    reserveBin(offset + bytes + 3);
+    fill(reinterpret_cast<T*>(bin_.get() + offset));
+    binSize_ += bytes;
     JsonWriter& w = bufferViews_;
     w.beginObject();
     w.key("buffer");
@@ -196,9 +219,9 @@ int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill) {
     return bufferViewCount_++;
 }
 
-// bounds: {min, max} (POSITION needs them) or null.
+// bounds: {min, max} (POSITION needs them) or null; normalized: integers read as [0, 1].
 int GlbBuilder::addAccessor(int view, std::size_t byteOffset, int componentType, std::size_t count,
-                            const char* type, const Vec3f* bounds) {
+                            const char* type, const Vec3f* bounds, bool normalized) {
     JsonWriter& w = accessors_;
     w.beginObject();
     w.key("bufferView");
@@ -209,6 +232,10 @@ int GlbBuilder::addAccessor(int view, std::size_t byteOffset, int componentType,
     }
     w.key("componentType");
     w.value(componentType);
+    if (normalized) {
+        w.key("normalized");
+        w.value(true);
+    }
     w.key("count");
     w.value(std::uint64_t{count});
     w.key("type");
@@ -239,8 +266,27 @@ int GlbBuilder::addMaterial(const Material& m) {
     w.value(m.metallic);
     w.key("roughnessFactor");
     w.value(m.roughness);
+    if (m.baseColorTexture) {
+        w.key("baseColorTexture");
+        w.beginObject();
+        w.key("index");
+        w.value(addTexture(*m.baseColorTexture));
+        w.endObject();
+    }
     w.endObject();
-    if (m.baseColor.w() < 1.0f) {
+    if (m.normalTexture) {
+        w.key("normalTexture");
+        w.beginObject();
+        w.key("index");
+        w.value(addTexture(*m.normalTexture));
+        w.endObject();
+    }
+    if (m.alphaMask) {
+        w.key("alphaMode");
+        w.value("MASK");
+        w.key("alphaCutoff");
+        w.value(m.alphaCutoff);
+    } else if (m.baseColor.w() < 1.0f) {
         w.key("alphaMode");
         w.value("BLEND");
     }
@@ -252,24 +298,60 @@ int GlbBuilder::addMaterial(const Material& m) {
     return static_cast<int>(materialKeys_.size()) - 1;
 }
 
+// A texture of `image` (PNG in a buffer view, sampler 0: linear filtering, REPEAT); an image
+// used by several materials is stored once.
+int GlbBuilder::addTexture(const Image& image) {
+    for (std::size_t i = 0; i < textureKeys_.size(); ++i) {
+        if (textureKeys_[i] == &image) return static_cast<int>(i);
+    }
+    const std::string png = encodePng(image);
+    const int view = addBufferView<char>(
+        png.size(), 0, [&png](char* dst) { std::memcpy(dst, png.data(), png.size()); });
+    images_.beginObject();
+    images_.key("bufferView");
+    images_.value(view);
+    images_.key("mimeType");
+    images_.value("image/png");
+    images_.endObject();
+    textures_.beginObject();
+    textures_.key("sampler");
+    textures_.value(0);
+    textures_.key("source");
+    textures_.value(static_cast<int>(textureKeys_.size()));
+    textures_.endObject();
+    textureKeys_.push_back(&image);
+    return static_cast<int>(textureKeys_.size()) - 1;
+}
+
 // Writes POSITION (with the min/max glTF requires), NORMAL (unit; a zero normal becomes +Y),
 // TANGENT and TEXCOORD_0 accessors shared by all primitives of the mesh into the attributes
 // object.
 void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
     const std::size_t n = mesh.positions.size();
-    Vec3f bounds[2] = {mesh.positions[0], mesh.positions[0]};
-    for (const Vec3f& p : mesh.positions) {
-        bounds[0] = bounds[0].cwiseMin(p);
-        bounds[1] = bounds[1].cwiseMax(p);
+    // Plain float loops: Eigen's per-vertex temporaries cost several times more here.
+    float lo[3] = {mesh.positions[0].x(), mesh.positions[0].y(), mesh.positions[0].z()};
+    float hi[3] = {lo[0], lo[1], lo[2]};
+    const float* p = mesh.positions.data()->data();
+    for (std::size_t i = 0; i < 3 * n; i += 3) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[i + k]);
+            hi[k] = std::max(hi[k], p[i + k]);
+        }
     }
+    const Vec3f bounds[2] = {Vec3f(lo[0], lo[1], lo[2]), Vec3f(hi[0], hi[1], hi[2])};
     attributes.key("POSITION");
     attributes.value(
         addAccessor(addBufferView(mesh.positions, kArrayBuffer), 0, kFloat, n, "VEC3", bounds));
     if (!mesh.normals.empty()) {
-        const int view = addBufferView<Vec3f>(n, kArrayBuffer, [&mesh](Vec3f* dst) {
-            for (const Vec3f& v : mesh.normals) {
-                const float len = v.norm();
-                *dst++ = len > 1e-20f ? Vec3f(v / len) : Vec3f(0.0f, 1.0f, 0.0f);
+        const int view = addBufferView<float>(3 * n, kArrayBuffer, [&mesh, n](float* dst) {
+            const float* v = mesh.normals.data()->data();
+            for (std::size_t i = 0; i < 3 * n; i += 3) {
+                const float len =
+                    std::sqrt(v[i] * v[i] + v[i + 1] * v[i + 1] + v[i + 2] * v[i + 2]);
+                const bool usable = len > 1e-20f;
+                dst[i] = usable ? v[i] / len : 0.0f;
+                dst[i + 1] = usable ? v[i + 1] / len : 1.0f;
+                dst[i + 2] = usable ? v[i + 2] / len : 0.0f;
             }
         });
         attributes.key("NORMAL");
@@ -287,17 +369,43 @@ void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
         attributes.value(addAccessor(addBufferView(mesh.uvs, kArrayBuffer), 0, kFloat, n, "VEC2"));
     }
     if (!mesh.joints.empty()) addSkinAttributes(mesh, attributes);
+    static const char* const kTypes[] = {"SCALAR", "VEC2", "VEC3", "VEC4"};
+    for (const VertexAttribute& a : mesh.attributes) {
+        attributes.key(a.name);
+        attributes.value(addAccessor(addBufferView(a.values, kArrayBuffer), 0, kFloat, n,
+                                     kTypes[a.components - 1]));
+    }
 }
 
-// JOINTS_0 as UNSIGNED_BYTE when every joint index fits, else UNSIGNED_SHORT; WEIGHTS_0 as
-// normalised FLOAT.
+// Whether every vertex is bound to its first joint alone (weights (w, 0, 0, 0), w > 0): what
+// skeleton bones are. normalizeSkinning then gives weights (1, 0, 0, 0) and joints (j, 0, 0, 0).
+bool rigidlyBound(const Mesh& mesh) {
+    for (const Vec4f& w : mesh.weights) {
+        if (!(w[0] > 0.0f) || w[1] != 0.0f || w[2] != 0.0f || w[3] != 0.0f) return false;
+    }
+    return true;
+}
+
+// JOINTS_0 as UNSIGNED_BYTE when every joint index fits, else UNSIGNED_SHORT. WEIGHTS_0 as
+// normalised UNSIGNED_BYTE (1, 0, 0, 0) when every vertex is rigidly bound (255 reads back as
+// exactly 1), else as FLOAT — never a lossy quantization.
 void GlbBuilder::addSkinAttributes(const Mesh& mesh, JsonWriter& attributes) {
+    const std::size_t n = mesh.joints.size();
+    const bool rigid = rigidlyBound(mesh);
     std::vector<std::array<std::uint16_t, 4>> joints;
     std::vector<Vec4f> weights;
-    normalizeSkinning(mesh, joints, weights);
+    if (!rigid) normalizeSkinning(mesh, joints, weights);
     std::uint16_t maxJoint = 0;
-    for (const auto& j : joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
-    const std::size_t n = joints.size();
+    if (rigid) {
+        for (const auto& j : mesh.joints) maxJoint = std::max(maxJoint, j[0]);
+    } else {
+        for (const auto& j : joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
+    }
+    // A rigid vertex's joints are (j, 0, 0, 0); the others come normalized.
+    if (rigid) {
+        joints.resize(n, {0, 0, 0, 0});
+        for (std::size_t v = 0; v < n; ++v) joints[v][0] = mesh.joints[v][0];
+    }
     int jointView = 0;
     if (maxJoint <= 255) {
         jointView = addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [&joints](std::uint8_t* dst) {
@@ -312,7 +420,14 @@ void GlbBuilder::addSkinAttributes(const Mesh& mesh, JsonWriter& attributes) {
     attributes.value(
         addAccessor(jointView, 0, maxJoint <= 255 ? kUnsignedByte : kUnsignedShort, n, "VEC4"));
     attributes.key("WEIGHTS_0");
-    attributes.value(addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4"));
+    if (rigid) {
+        const int view = addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [n](std::uint8_t* dst) {
+            for (std::size_t i = 0; i < 4 * n; ++i) dst[i] = i % 4 == 0 ? 255 : 0;
+        });
+        attributes.value(addAccessor(view, 0, kUnsignedByte, n, "VEC4", nullptr, true));
+    } else {
+        attributes.value(addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4"));
+    }
 }
 
 // The mesh's index buffer view: UNSIGNED_SHORT when every index fits below 65535 (65535 is the
@@ -513,8 +628,8 @@ void GlbBuilder::writeDocument(std::string& out) {
     w.endObject();
     w.endArray();
     const std::pair<const char*, const std::string*> arrays[] = {
-        {"nodes", &nodesText_},         {"meshes", &meshesText_},
-        {"skins", &skinsText_},         {"materials", &materialsText_},
+        {"nodes", &nodesText_},         {"meshes", &meshesText_},          {"skins", &skinsText_},
+        {"materials", &materialsText_}, {"textures", &texturesText_},      {"images", &imagesText_},
         {"accessors", &accessorsText_}, {"bufferViews", &bufferViewsText_}};
     for (const auto& [name, text] : arrays) {
         if (text->empty()) continue;
@@ -523,21 +638,28 @@ void GlbBuilder::writeDocument(std::string& out) {
         w.rawValue(*text);  // the elements, comma-separated
         w.endArray();
     }
-    if (!bin_.empty()) {
+    if (!textureKeys_.empty()) {
+        // glTF's defaults are REPEAT wrapping; linear, mipmapped filtering suits tiling bark.
+        w.key("samplers");
+        w.rawValue(R"([{"magFilter":9729,"minFilter":9987}])");
+    }
+    if (binSize_ != 0) {
         w.key("buffers");
         w.beginArray();
         w.beginObject();
         w.key("byteLength");
-        w.value(std::uint64_t{bin_.size()});
+        w.value(std::uint64_t{binSize_});
         w.endObject();
         w.endArray();
     }
     w.endObject();
 }
 
-std::string GlbBuilder::encode() {
+// Builds the file: `head` is the 12-byte header, the JSON chunk and the BIN chunk's header;
+// the BIN chunk's bytes follow in bin() (kept apart so a file writer needs no joined copy).
+void GlbBuilder::encode() {
     io::checkScene(scene_, context_);
-    bin_.reserve(binBytesBound(scene_));
+    reserveBin(binBytesBound(scene_));
     std::size_t extrasBytes = 0;
     for (const SceneNode& node : scene_.nodes) extrasBytes += node.extrasJson.size();
     nodesText_.reserve(extrasBytes + 160 * scene_.nodes.size());
@@ -545,37 +667,46 @@ std::string GlbBuilder::encode() {
     for (const Mesh& mesh : scene_.meshes) meshIndex.push_back(addMesh(mesh));
     addNodes(meshIndex);
     addSkins();
-    bin_.resize((bin_.size() + 3) & ~std::size_t{3}, '\0');
+    alignBin();
 
-    // Header and JSON chunk header first (lengths filled in below), the JSON text, then BIN.
-    std::string out;
-    out.reserve(20 + 256 + bufferViewsText_.size() + accessorsText_.size() + materialsText_.size() +
-                meshesText_.size() + nodesText_.size() + skinsText_.size() +
-                scene_.extrasJson.size() + 8 * roots_.size() + scene_.generator.size() + 3 + 8 +
-                bin_.size());
-    out.resize(20);
-    writeDocument(out);
-    out.resize((out.size() + 3) & ~std::size_t{3}, ' ');
-    const std::size_t jsonBytes = out.size() - 20;
-    const std::size_t total = out.size() + (bin_.empty() ? 0 : 8 + bin_.size());
+    // Header and JSON chunk header first (lengths filled in below), the JSON text, then BIN's
+    // chunk header.
+    head_.reserve(20 + 256 + bufferViewsText_.size() + accessorsText_.size() +
+                  materialsText_.size() + meshesText_.size() + nodesText_.size() +
+                  skinsText_.size() + scene_.extrasJson.size() + 8 * roots_.size() +
+                  scene_.generator.size() + 3 + 8);
+    head_.resize(20);
+    writeDocument(head_);
+    head_.resize((head_.size() + 3) & ~std::size_t{3}, ' ');
+    const std::size_t jsonBytes = head_.size() - 20;
+    const std::size_t total = head_.size() + (binSize_ == 0 ? 0 : 8 + binSize_);
     if (total > 0xFFFFFFFFu) throw Error(context_ + ": scene is too large for a GLB (> 4 GiB)");
     const std::uint32_t header[5] = {kGlbMagic, 2, static_cast<std::uint32_t>(total),
                                      static_cast<std::uint32_t>(jsonBytes), kChunkJson};
-    std::memcpy(out.data(), header, sizeof header);
-    if (!bin_.empty()) {
-        const std::uint32_t binHeader[2] = {static_cast<std::uint32_t>(bin_.size()), kChunkBin};
-        out.append(reinterpret_cast<const char*>(binHeader), sizeof binHeader);
-        out += bin_;
+    std::memcpy(head_.data(), header, sizeof header);
+    if (binSize_ != 0) {
+        const std::uint32_t binHeader[2] = {static_cast<std::uint32_t>(binSize_), kChunkBin};
+        head_.append(reinterpret_cast<const char*>(binHeader), sizeof binHeader);
     }
-    return out;
 }
 
 }  // namespace
 
-std::string encodeGlb(const Scene& scene) { return GlbBuilder(scene, "scene").encode(); }
+std::string encodeGlb(const Scene& scene) {
+    GlbBuilder builder(scene, "scene");
+    builder.encode();
+    std::string out;
+    out.reserve(builder.head().size() + builder.bin().size());
+    out += builder.head();
+    out += builder.bin();
+    return out;
+}
 
 void writeGlb(const Scene& scene, const std::string& path) {
-    writeFileAtomic(path, GlbBuilder(scene, path).encode());
+    GlbBuilder builder(scene, path);
+    builder.encode();
+    const std::string_view parts[] = {builder.head(), builder.bin()};
+    writeFileAtomic(path, parts);
 }
 
 }  // namespace ramus

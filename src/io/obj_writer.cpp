@@ -10,6 +10,7 @@
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
+#include "ramus/render.hpp"
 
 namespace ramus {
 
@@ -34,14 +35,12 @@ void appendFloats(std::string& out, const char* tag, const float* v, int n) {
     out += '\n';
 }
 
-bool sameMaterial(const Material& a, const Material& b) {
-    return a.name == b.name && a.baseColor == b.baseColor && a.metallic == b.metallic &&
-           a.roughness == b.roughness && a.doubleSided == b.doubleSided;
-}
-
-// The scene's distinct materials with unique OBJ names, in first-use order.
+// The scene's distinct materials with unique OBJ names, in first-use order, and the PNG files
+// of their textures (named after the OBJ's stem and the first material using them).
 class MaterialTable {
 public:
+    explicit MaterialTable(std::string textureStem) : textureStem_(std::move(textureStem)) {}
+
     const std::string& nameOf(const Material& m) {
         for (std::size_t i = 0; i < materials_.size(); ++i) {
             if (sameMaterial(materials_[i], m)) return names_[i];
@@ -53,7 +52,14 @@ public:
         }
         materials_.push_back(m);
         names_.push_back(name);
+        baseColorFiles_.push_back(textureFile(m.baseColorTexture.get(), name));
+        normalFiles_.push_back(textureFile(m.normalTexture.get(), name + "_normal"));
         return names_.back();
+    }
+
+    /// The texture files to write: file name (next to the OBJ) and image.
+    const std::vector<std::pair<std::string, const Image*>>& textureFiles() const {
+        return textures_;
     }
 
     std::string mtl() const {
@@ -76,13 +82,30 @@ public:
             out += "illum 2\n";
             appendFloats(out, "Pr", &m.roughness, 1);
             appendFloats(out, "Pm", &m.metallic, 1);
+            if (!baseColorFiles_[i].empty()) {
+                out += "map_Kd " + baseColorFiles_[i] + "\n";
+                // Leaf cards: the same image's alpha cuts the leaf out.
+                if (m.alphaMask) out += "map_d " + baseColorFiles_[i] + "\n";
+            }
+            if (!normalFiles_[i].empty()) out += "norm " + normalFiles_[i] + "\n";
         }
         return out;
     }
 
 private:
+    std::string textureFile(const Image* image, const std::string& materialName) {
+        if (image == nullptr) return {};
+        for (const auto& [file, known] : textures_) {
+            if (known == image) return file;
+        }
+        textures_.emplace_back(textureStem_ + "_" + materialName + ".png", image);
+        return textures_.back().first;
+    }
+
+    std::string textureStem_;
     std::vector<Material> materials_;
-    std::vector<std::string> names_;
+    std::vector<std::string> names_, baseColorFiles_, normalFiles_;
+    std::vector<std::pair<std::string, const Image*>> textures_;
 };
 
 struct VertexBase {
@@ -110,24 +133,29 @@ void appendCorner(std::string& out, const Mesh& mesh, const VertexBase& base, st
     }
 }
 
-// Vertices of one placed mesh: positions by the world matrix, normals by its cofactor matrix
-// (the inverse transpose up to scale, defined even for zero scale), uvs flipped to OBJ's
-// bottom-left origin.
-void appendVertices(std::string& out, const Mesh& mesh, const Mat4& world) {
+// Vertices of one placed mesh (those listed in `subset`, else all): positions by the world
+// matrix, normals by its cofactor matrix (the inverse transpose up to scale, defined even for
+// zero scale), uvs flipped to OBJ's bottom-left origin.
+void appendVertices(std::string& out, const Mesh& mesh, const Mat4& world,
+                    const std::vector<std::uint32_t>* subset = nullptr) {
     const Eigen::Matrix3d m = world.topLeftCorner<3, 3>();
     Eigen::Matrix3d cofactor;
     cofactor << m.col(1).cross(m.col(2)), m.col(2).cross(m.col(0)), m.col(0).cross(m.col(1));
     if (m.determinant() < 0.0) cofactor = -cofactor;
-    for (const Vec3f& p : mesh.positions) {
+    const std::size_t count = subset ? subset->size() : mesh.positions.size();
+    auto vertex = [&](std::size_t k) { return subset ? (*subset)[k] : k; };
+    for (std::size_t k = 0; k < count; ++k) {
+        const Vec3f& p = mesh.positions[vertex(k)];
         const Vec3f w = (m * p.cast<double>() + world.topRightCorner<3, 1>()).cast<float>();
         appendFloats(out, "v", w.data(), 3);
     }
-    for (const Vec2f& uv : mesh.uvs) {
+    for (std::size_t k = 0; k < count && !mesh.uvs.empty(); ++k) {
+        const Vec2f& uv = mesh.uvs[vertex(k)];
         const Vec2f t(uv.x(), 1.0f - uv.y());
         appendFloats(out, "vt", t.data(), 2);
     }
-    for (const Vec3f& n : mesh.normals) {
-        Vec3 w = cofactor * n.cast<double>();
+    for (std::size_t k = 0; k < count && !mesh.normals.empty(); ++k) {
+        Vec3 w = cofactor * mesh.normals[vertex(k)].cast<double>();
         const double len = w.norm();
         w = len > 1e-300 ? Vec3(w / len) : Vec3(Vec3::UnitY());
         const Vec3f wf = w.cast<float>();
@@ -135,30 +163,105 @@ void appendVertices(std::string& out, const Mesh& mesh, const Mat4& world) {
     }
 }
 
+void appendFace(std::string& out, const Mesh& mesh, const VertexBase& base, std::uint32_t k,
+                bool mirrored, const std::vector<std::uint32_t>* local = nullptr) {
+    auto corner = [&](std::uint32_t i) {
+        const std::uint32_t v = mesh.indices[i];
+        appendCorner(out, mesh, base, local ? (*local)[v] : v);
+    };
+    // A mirroring transform turns counter-clockwise faces clockwise: swap two corners back.
+    out += 'f';
+    corner(k);
+    corner(mirrored ? k + 2 : k + 1);
+    corner(mirrored ? k + 1 : k + 2);
+    out += '\n';
+}
+
+void advance(VertexBase& base, const Mesh& mesh, std::size_t count) {
+    base.position += count;
+    base.uv += mesh.uvs.empty() ? 0 : count;
+    base.normal += mesh.normals.empty() ? 0 : count;
+}
+
+bool isMirrored(const Mat4& world) { return world.topLeftCorner<3, 3>().determinant() < 0.0; }
+
+// Per vertex: the skin joint (index into Skin::joints) with the largest weight (the first of
+// equal ones).
+std::vector<std::uint32_t> dominantJoints(const Mesh& mesh) {
+    std::vector<std::uint32_t> joint(mesh.positions.size());
+    for (std::size_t v = 0; v < joint.size(); ++v) {
+        int best = 0;
+        for (int s = 1; s < 4; ++s) best = mesh.weights[v][s] > mesh.weights[v][best] ? s : best;
+        joint[v] = mesh.joints[v][static_cast<std::size_t>(best)];
+    }
+    return joint;
+}
+
+// A skinned mesh: one o/g group per joint, named like the joint's node (e.g. "thigh_L"), with
+// the triangles whose first corner is bound most strongly to it and the vertices they use, so
+// a skeleton's bones import as separate objects; materials stay as usemtl within each group.
+void appendJointGroups(std::string& out, const Scene& scene, const io::MeshInstance& inst,
+                       MaterialTable& materials, VertexBase& base) {
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    const Skin& skin = scene.skins[static_cast<std::size_t>(scene.nodes[inst.node].skin)];
+    const std::vector<std::uint32_t> joint = dominantJoints(mesh);
+    const std::vector<MeshPrimitive> primitives = io::drawnPrimitives(mesh);
+    // Per joint: (first index of the triangle, its primitive), in index-buffer order.
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> groups(skin.joints.size());
+    for (std::uint32_t p = 0; p < primitives.size(); ++p) {
+        const MeshPrimitive& prim = primitives[p];
+        for (std::uint32_t k = prim.firstIndex; k < prim.firstIndex + prim.indexCount; k += 3) {
+            groups[joint[mesh.indices[k]]].emplace_back(k, p);
+        }
+    }
+    const bool mirrored = isMirrored(inst.world);
+    std::vector<std::uint32_t> local(mesh.positions.size());
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        if (groups[g].empty()) continue;
+        const int node = skin.joints[g];
+        const std::string name = objName(scene.nodes[node].name, "node_" + std::to_string(node));
+        out += "o " + name + "\ng " + name + "\n";
+        std::vector<std::uint32_t> used;
+        for (const auto& [k, p] : groups[g])
+            used.insert(used.end(), &mesh.indices[k], &mesh.indices[k] + 3);
+        std::sort(used.begin(), used.end());
+        used.erase(std::unique(used.begin(), used.end()), used.end());
+        for (std::uint32_t i = 0; i < used.size(); ++i) local[used[i]] = i;
+        appendVertices(out, mesh, inst.world, &used);
+        std::uint32_t current = ~0u;
+        for (const auto& [k, p] : groups[g]) {
+            if (p != current) {
+                out +=
+                    "usemtl " + materials.nameOf(io::primitiveMaterial(mesh, primitives[p])) + "\n";
+                current = p;
+            }
+            appendFace(out, mesh, base, k, mirrored, &local);
+        }
+        advance(base, mesh, used.size());
+    }
+}
+
 void appendInstance(std::string& out, const Scene& scene, const io::MeshInstance& inst,
                     MaterialTable& materials, VertexBase& base) {
     const Mesh& mesh = scene.meshes[inst.mesh];
+    if (inst.node >= 0 && scene.nodes[inst.node].skin >= 0 && !mesh.joints.empty()) {
+        appendJointGroups(out, scene, inst, materials, base);
+        return;
+    }
     const std::string fallback =
         inst.node >= 0 ? "node_" + std::to_string(inst.node) : "mesh_" + std::to_string(inst.mesh);
     const std::string name =
         objName(inst.node >= 0 ? scene.nodes[inst.node].name : mesh.name, fallback);
     out += "o " + name + "\ng " + name + "\n";
     appendVertices(out, mesh, inst.world);
-    // A mirroring transform turns counter-clockwise faces clockwise: swap two corners back.
-    const bool mirrored = inst.world.topLeftCorner<3, 3>().determinant() < 0.0;
+    const bool mirrored = isMirrored(inst.world);
     for (const MeshPrimitive& prim : io::drawnPrimitives(mesh)) {
         out += "usemtl " + materials.nameOf(io::primitiveMaterial(mesh, prim)) + "\n";
         for (std::uint32_t k = prim.firstIndex; k < prim.firstIndex + prim.indexCount; k += 3) {
-            out += 'f';
-            appendCorner(out, mesh, base, mesh.indices[k]);
-            appendCorner(out, mesh, base, mesh.indices[mirrored ? k + 2 : k + 1]);
-            appendCorner(out, mesh, base, mesh.indices[mirrored ? k + 1 : k + 2]);
-            out += '\n';
+            appendFace(out, mesh, base, k, mirrored);
         }
     }
-    base.position += mesh.positions.size();
-    base.uv += mesh.uvs.size();
-    base.normal += mesh.normals.size();
+    advance(base, mesh, mesh.positions.size());
 }
 
 }  // namespace
@@ -168,12 +271,15 @@ void writeObj(const Scene& scene, const std::string& path) {
     const std::filesystem::path mtlPath = std::filesystem::path(path).replace_extension(".mtl");
     std::string obj = "# ramus 0.1.0 OBJ export: Y up, metres, front +Z\n";
     obj += "mtllib " + mtlPath.filename().string() + "\n";
-    MaterialTable materials;
+    MaterialTable materials(objName(std::filesystem::path(path).stem().string(), "model"));
     VertexBase base;
     for (const io::MeshInstance& inst : io::meshInstances(scene)) {
         appendInstance(obj, scene, inst, materials, base);
     }
-    // The library first, so the OBJ never points at a missing or stale MTL.
+    // Textures and the library first, so the OBJ never points at missing or stale files.
+    for (const auto& [file, image] : materials.textureFiles()) {
+        writeFileAtomic((mtlPath.parent_path() / file).string(), encodePng(*image));
+    }
     writeFileAtomic(mtlPath.string(), materials.mtl());
     writeFileAtomic(path, obj);
 }

@@ -69,6 +69,7 @@ struct ScreenVertex {
     float depth;
     Vec3f cam;
     float litFront, litBack;
+    Vec2f uv;
 };
 
 struct Projected {
@@ -94,7 +95,9 @@ Projected project(const Scene& scene, const std::vector<io::MeshInstance>& insta
         out.firstVertex.push_back(out.vertices.size());
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
             const Vec3 p = toCamera * (m * mesh.positions[i].cast<double>() + t);
-            ScreenVertex v{0, 0, static_cast<float>(-p.z()), p.cast<float>(), 0.0f, 0.0f};
+            ScreenVertex v{
+                0, 0, static_cast<float>(-p.z()), p.cast<float>(), 0.0f, 0.0f, Vec2f::Zero()};
+            if (!mesh.uvs.empty()) v.uv = mesh.uvs[i];
             if (!mesh.normals.empty()) {
                 Vec3 n = normalToCamera * mesh.normals[i].cast<double>();
                 const double len = n.norm();
@@ -152,11 +155,37 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
 struct Corner {
     std::int64_t x, y;
     float depth, lit;
+    Vec2f uv;
 };
+
+// A primitive's surface: base colour, and optionally its texture (sampled nearest, REPEAT;
+// the camera is orthographic, so screen-space interpolation of uvs is exact) and alpha mask.
+struct Surface {
+    Vec3f color;
+    const Image* texture = nullptr;
+    bool mask = false;
+    float cutoff = 0.5f;
+    float alpha = 1.0f;               // the base colour's alpha
+    const float* toLinear = nullptr;  // 256 entries: sRGB byte → linear
+    bool textured() const { return texture != nullptr; }
+};
+
+// Colour of a textured sample, or false when the alpha mask discards it.
+bool sampleTexture(const Surface& surface, const Vec2f& uv, Vec3f& color) {
+    const Image& t = *surface.texture;
+    const float u = uv.x() - std::floor(uv.x()), v = uv.y() - std::floor(uv.y());
+    const int x = std::min(t.width - 1, static_cast<int>(u * static_cast<float>(t.width)));
+    const int y = std::min(t.height - 1, static_cast<int>(v * static_cast<float>(t.height)));
+    const std::uint8_t* px = t.rgba.data() + (static_cast<std::size_t>(y) * t.width + x) * 4;
+    if (surface.mask && surface.alpha * (px[3] / 255.0f) < surface.cutoff) return false;
+    color = surface.color.cwiseProduct(
+        Vec3f(surface.toLinear[px[0]], surface.toLinear[px[1]], surface.toLinear[px[2]]));
+    return true;
+}
 
 // Rasterizes one triangle with positive orientation (a, b, c) into the band.
 void fillTriangle(Band& band, const Corner& a, const Corner& b, const Corner& c, std::int64_t area,
-                  const Vec3f& color) {
+                  const Surface& surface) {
     const std::int64_t half = kSubpixel / 2;
     // Sample i has its centre at i·kSubpixel + half: the first at or after lo, the last at or
     // before hi.
@@ -194,7 +223,10 @@ void fillTriangle(Band& band, const Corner& a, const Corner& b, const Corner& c,
                 const float l2 = 1.0f - l0 - l1;
                 const float z = l0 * a.depth + l1 * b.depth + l2 * c.depth;
                 const std::size_t s = rowStart + x;
-                if (z < band.depth[s]) {
+                Vec3f color = surface.color;
+                if (z < band.depth[s] &&
+                    (!surface.textured() ||
+                     sampleTexture(surface, l0 * a.uv + l1 * b.uv + l2 * c.uv, color))) {
                     band.depth[s] = z;
                     band.color[s] = color * (l0 * a.lit + l1 * b.lit + l2 * c.lit);
                 }
@@ -213,7 +245,7 @@ void fillTriangle(Band& band, const Corner& a, const Corner& b, const Corner& c,
 // (interpolated vertex normals, or the face normal for meshes without normals) and orients the
 // triangle for fillTriangle.
 void drawTriangle(Band& band, const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
-                  bool smooth, bool mirrored, bool doubleSided, const Vec3f& color) {
+                  bool smooth, bool mirrored, bool doubleSided, const Surface& surface) {
     const std::int64_t top = std::int64_t{band.firstRow} * kSubpixel;
     const std::int64_t bottom = std::int64_t{band.firstRow + band.rows} * kSubpixel;
     if (std::max({a.y, b.y, c.y}) < top || std::min({a.y, b.y, c.y}) > bottom) return;
@@ -223,7 +255,8 @@ void drawTriangle(Band& band, const ScreenVertex& a, const ScreenVertex& b, cons
     // Screen y points down, so a counter-clockwise (front) face has negative screen area.
     const bool front = (area < 0) != mirrored;
     if (!front && !doubleSided) return;
-    Corner ca{a.x, a.y, a.depth, 0.0f}, cb{b.x, b.y, b.depth, 0.0f}, cc{c.x, c.y, c.depth, 0.0f};
+    Corner ca{a.x, a.y, a.depth, 0.0f, a.uv}, cb{b.x, b.y, b.depth, 0.0f, b.uv},
+        cc{c.x, c.y, c.depth, 0.0f, c.uv};
     if (smooth) {
         ca.lit = front ? a.litFront : a.litBack;
         cb.lit = front ? b.litFront : b.litBack;
@@ -239,13 +272,14 @@ void drawTriangle(Band& band, const ScreenVertex& a, const ScreenVertex& b, cons
         std::swap(cb, cc);
         area = -area;
     }
-    fillTriangle(band, ca, cb, cc, area, color);
+    fillTriangle(band, ca, cb, cc, area, surface);
 }
 
 struct DrawList {
     const Scene& scene;
     const std::vector<io::MeshInstance>& instances;
     const Projected& projected;
+    const float* toLinear;  // sRGB byte → linear, 256 entries
 };
 
 void drawBand(Band& band, const DrawList& list) {
@@ -259,11 +293,16 @@ void drawBand(Band& band, const DrawList& list) {
         const bool smooth = !mesh.normals.empty();
         for (const MeshPrimitive& prim : io::drawnPrimitives(mesh)) {
             const Material& material = io::primitiveMaterial(mesh, prim);
-            const Vec3f color = material.baseColor.head<3>();
+            Surface surface{material.baseColor.head<3>()};
+            if (!mesh.uvs.empty()) surface.texture = material.baseColorTexture.get();
+            surface.mask = material.alphaMask;
+            surface.cutoff = material.alphaCutoff;
+            surface.alpha = material.baseColor.w();
+            surface.toLinear = list.toLinear;
             const std::uint32_t* idx = mesh.indices.data() + prim.firstIndex;
             for (std::uint32_t t = 0; t < prim.indexCount; t += 3) {
                 drawTriangle(band, v[idx[t]], v[idx[t + 1]], v[idx[t + 2]], smooth, mirrored,
-                             material.doubleSided, color);
+                             material.doubleSided, surface);
             }
         }
     }
@@ -276,6 +315,17 @@ std::vector<std::uint8_t> srgbTable() {
         const double v = static_cast<double>(i) / static_cast<double>(table.size() - 1);
         const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
         table[i] = static_cast<std::uint8_t>(std::lround(s * 255.0));
+    }
+    return table;
+}
+
+// 8-bit sRGB → linear [0, 1] (IEC 61966-2-1), for texture samples.
+std::vector<float> linearTable() {
+    std::vector<float> table(256);
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        const double s = static_cast<double>(i) / 255.0;
+        table[i] =
+            static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
     }
     return table;
 }
@@ -342,7 +392,8 @@ Image renderScene(const Scene& scene, const RenderParams& params) {
     band.width = sampleWidth;
     band.depth.resize(static_cast<std::size_t>(sampleWidth) * bandPixels * kSupersample);
     band.color.resize(band.depth.size());
-    const DrawList list{scene, instances, projected};
+    const std::vector<float> toLinear = linearTable();
+    const DrawList list{scene, instances, projected, toLinear.data()};
     const std::vector<std::uint8_t> lut = srgbTable();
     for (int py = 0; py < params.height; py += bandPixels) {
         band.firstRow = py * kSupersample;

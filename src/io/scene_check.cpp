@@ -1,6 +1,7 @@
 #include "io/scene_check.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 
@@ -29,6 +30,19 @@ bool allFinite(const Vec& v) {
     return true;
 }
 
+// Whether all `count` floats are finite: a float is ±inf or NaN exactly when its exponent
+// bits are all ones. One branch-free pass that the compiler vectorizes; only a failure looks
+// closer.
+bool allFiniteFloats(const float* values, std::size_t count) {
+    constexpr std::uint32_t kExponent = 0x7F800000u;
+    std::uint32_t nonFinite = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        nonFinite |= static_cast<std::uint32_t>(
+            (std::bit_cast<std::uint32_t>(values[i]) & kExponent) == kExponent);
+    }
+    return nonFinite == 0;
+}
+
 template <typename Vec>
 void checkAttribute(const std::vector<Vec>& values, std::size_t vertexCount, const char* name,
                     const std::string& where) {
@@ -36,6 +50,11 @@ void checkAttribute(const std::vector<Vec>& values, std::size_t vertexCount, con
         fail(where, std::string(name) + " has " + std::to_string(values.size()) +
                         " entries; expected 0 or " + std::to_string(vertexCount) +
                         " (one per vertex)");
+    }
+    static_assert(sizeof(Vec) == sizeof(float) * Vec::SizeAtCompileTime, "packed vectors");
+    if (values.empty() ||
+        allFiniteFloats(values.data()->data(), values.size() * Vec::SizeAtCompileTime)) {
+        return;
     }
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!allFinite(values[i])) {
@@ -60,6 +79,58 @@ void checkMaterial(const Material& m, const std::string& where) {
     if (!inUnitRange(m.roughness)) {
         fail(where, "material '" + m.name + "': roughness is " + formatFloat(m.roughness) +
                         "; expected a value in [0, 1]");
+    }
+    if (m.alphaMask && !inUnitRange(m.alphaCutoff)) {
+        fail(where, "material '" + m.name + "': alphaCutoff is " + formatFloat(m.alphaCutoff) +
+                        "; expected a value in [0, 1]");
+    }
+    const std::pair<const char*, const Image*> textures[] = {
+        {"baseColorTexture", m.baseColorTexture.get()}, {"normalTexture", m.normalTexture.get()}};
+    for (const auto& [name, image] : textures) {
+        if (image == nullptr) continue;
+        const std::size_t expected = image->width > 0 && image->height > 0
+                                         ? std::size_t{4} * static_cast<std::size_t>(image->width) *
+                                               static_cast<std::size_t>(image->height)
+                                         : 0;
+        if (expected == 0 || image->rgba.size() != expected) {
+            fail(where, "material '" + m.name + "': " + name + " is " +
+                            std::to_string(image->width) + "x" + std::to_string(image->height) +
+                            " with " + std::to_string(image->rgba.size()) +
+                            " bytes; expected a non-empty image with 4 bytes (RGBA) per pixel");
+        }
+    }
+}
+
+// Custom attributes: names glTF accepts for application-specific data, unique, 1–4 finite
+// components per vertex.
+void checkCustomAttributes(const Mesh& mesh, const std::string& where) {
+    const std::size_t n = mesh.positions.size();
+    for (std::size_t k = 0; k < mesh.attributes.size(); ++k) {
+        const VertexAttribute& a = mesh.attributes[k];
+        const std::string label = "attribute '" + a.name + "'";
+        if (a.name.size() < 2 || a.name[0] != '_') {
+            fail(where, label + ": expected a name starting with '_' (glTF application-specific " +
+                            "attributes), e.g. _WIND");
+        }
+        for (std::size_t j = 0; j < k; ++j) {
+            if (mesh.attributes[j].name == a.name) fail(where, label + " is given twice");
+        }
+        if (a.components < 1 || a.components > 4) {
+            fail(where,
+                 label + " has " + std::to_string(a.components) + " components; expected 1 to 4");
+        }
+        const std::size_t expected = n * static_cast<std::size_t>(a.components);
+        if (a.values.size() != expected) {
+            fail(where, label + " has " + std::to_string(a.values.size()) + " values; expected " +
+                            std::to_string(expected) + " (" + std::to_string(a.components) +
+                            " per vertex)");
+        }
+        for (std::size_t i = 0; i < a.values.size(); ++i) {
+            if (!std::isfinite(a.values[i])) {
+                fail(where,
+                     label + " of vertex " + std::to_string(i / a.components) + " is not finite");
+            }
+        }
     }
 }
 
@@ -115,11 +186,14 @@ void checkMesh(const Mesh& mesh, const std::string& where) {
     checkAttribute(mesh.tangents, n, "tangents", where);
     checkAttribute(mesh.uvs, n, "uvs", where);
     checkSkinAttributes(mesh, where);
+    checkCustomAttributes(mesh, where);
     if (mesh.indices.size() % 3 != 0) {
         fail(where, "has " + std::to_string(mesh.indices.size()) +
                         " indices; expected a multiple of 3 (triangles)");
     }
-    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+    std::uint32_t largest = 0;
+    for (const std::uint32_t index : mesh.indices) largest = std::max(largest, index);
+    for (std::size_t i = 0; largest >= n && i < mesh.indices.size(); ++i) {
         if (mesh.indices[i] >= n) {
             fail(where, "index " + std::to_string(i) + " is " + std::to_string(mesh.indices[i]) +
                             "; expected < " + std::to_string(n) + " (the vertex count)");
@@ -129,7 +203,25 @@ void checkMesh(const Mesh& mesh, const std::string& where) {
     for (const Material& m : mesh.materials) checkMaterial(m, where);
 }
 
+// Whether node i is valid; cheap (no strings), so the located messages of checkNode are built
+// only for a node that fails.
+bool nodeIsValid(const Scene& scene, std::size_t i) {
+    const SceneNode& node = scene.nodes[i];
+    const int meshCount = static_cast<int>(scene.meshes.size());
+    const int skinCount = static_cast<int>(scene.skins.size());
+    if (node.parent < -1 || node.parent >= static_cast<int>(i)) return false;
+    if (node.mesh < -1 || node.mesh >= meshCount || node.skin < -1 || node.skin >= skinCount) {
+        return false;
+    }
+    if (!allFinite(node.translation) || !allFinite(node.scale)) return false;
+    if (node.mesh >= 0 && (node.skin >= 0) == scene.meshes[node.mesh].joints.empty()) return false;
+    if (node.mesh < 0 && node.skin >= 0) return false;
+    const double norm = node.rotation.norm();
+    return std::isfinite(norm) && norm >= 1e-6;
+}
+
 void checkNode(const Scene& scene, std::size_t i, const std::string& context) {
+    if (nodeIsValid(scene, i)) return;
     const SceneNode& node = scene.nodes[i];
     const std::string where = context + ": node " + std::to_string(i) + " ('" + node.name + "')";
     if (node.parent < -1 || node.parent >= static_cast<int>(i)) {
@@ -163,13 +255,6 @@ void checkNode(const Scene& scene, std::size_t i, const std::string& context) {
     if (!std::isfinite(norm) || norm < 1e-6) {
         fail(where, "rotation is not a valid quaternion (norm " + std::to_string(norm) + ")");
     }
-}
-
-bool isAncestorOrSelf(const Scene& scene, int ancestor, int node) {
-    for (int i = node; i >= 0; i = scene.nodes[i].parent) {
-        if (i == ancestor) return true;
-    }
-    return false;
 }
 
 void checkInverseBindMatrices(const Skin& skin, const std::string& where) {
@@ -213,8 +298,15 @@ void checkSkin(const Scene& scene, std::size_t k, const std::string& context) {
         fail(where, "skeleton is " + std::to_string(skin.skeleton) + "; expected -1 or < " +
                         std::to_string(nodeCount));
     }
+    // Nodes at or below the skeleton root, in one pass (parents come before children).
+    std::vector<char> below(scene.nodes.size(), static_cast<char>(skin.skeleton < 0));
+    for (std::size_t i = 0; skin.skeleton >= 0 && i < scene.nodes.size(); ++i) {
+        const int parent = scene.nodes[i].parent;
+        below[i] = static_cast<char>(static_cast<int>(i) == skin.skeleton ||
+                                     (parent >= 0 && below[parent] != 0));
+    }
     for (int joint : skin.joints) {
-        if (skin.skeleton >= 0 && !isAncestorOrSelf(scene, skin.skeleton, joint)) {
+        if (below[joint] == 0) {
             fail(where, "joint node " + std::to_string(joint) + " is not below the skeleton root " +
                             std::to_string(skin.skeleton));
         }

@@ -279,6 +279,7 @@ private:
             return;
         }
         result_.polygonOffsets.push_back(static_cast<std::uint32_t>(out.size()));
+        result_.polygonNodes.push_back(state_.node);
     }
 
     void countRotation() {

@@ -1,6 +1,22 @@
 #include "ramus/mesh.hpp"
 
+#include <algorithm>
+
 namespace ramus {
+
+bool sameMaterial(const Material& a, const Material& b) {
+    return a.name == b.name && a.baseColor == b.baseColor && a.metallic == b.metallic &&
+           a.roughness == b.roughness && a.doubleSided == b.doubleSided &&
+           a.alphaMask == b.alphaMask && a.alphaCutoff == b.alphaCutoff &&
+           a.baseColorTexture == b.baseColorTexture && a.normalTexture == b.normalTexture;
+}
+
+const VertexAttribute* findAttribute(const Mesh& mesh, std::string_view name) {
+    for (const VertexAttribute& a : mesh.attributes) {
+        if (a.name == name) return &a;
+    }
+    return nullptr;
+}
 
 Aabb Mesh::bounds() const {
     Aabb box;
@@ -23,6 +39,29 @@ void appendAttribute(std::vector<T>& into, const std::vector<T>& from, bool keep
         into.clear();
     }
 }
+// Custom attributes survive an append when both sides have them (same name and width) for all
+// their vertices; an empty mesh takes the other's.
+void appendCustomAttributes(Mesh& mesh, const Mesh& other, bool wasEmpty) {
+    if (wasEmpty) {
+        mesh.attributes = other.attributes;
+        return;
+    }
+    const std::size_t vertexCount = mesh.positions.size();
+    std::vector<VertexAttribute> kept;
+    for (VertexAttribute& a : mesh.attributes) {
+        const VertexAttribute* b = findAttribute(other, a.name);
+        const auto width = static_cast<std::size_t>(a.components);
+        if (b == nullptr || b->components != a.components ||
+            a.values.size() != width * vertexCount ||
+            b->values.size() != width * other.positions.size()) {
+            continue;
+        }
+        a.values.insert(a.values.end(), b->values.begin(), b->values.end());
+        kept.push_back(std::move(a));
+    }
+    mesh.attributes = std::move(kept);
+}
+
 }  // namespace
 
 void appendMesh(Mesh& mesh, const Mesh& other) {
@@ -55,10 +94,44 @@ void appendMesh(Mesh& mesh, const Mesh& other) {
                          keep(mesh.weights.size(), other.weights.size());
     appendAttribute(mesh.joints, other.joints, skinned);
     appendAttribute(mesh.weights, other.weights, skinned);
+    appendCustomAttributes(mesh, other, wasEmpty);
     mesh.positions.insert(mesh.positions.end(), other.positions.begin(), other.positions.end());
     mesh.indices.reserve(mesh.indices.size() + other.indices.size());
     for (std::uint32_t i : other.indices) mesh.indices.push_back(i + vertexBase);
     mesh.primitives = std::move(primitives);
+}
+
+void mergePrimitivesByMaterial(Mesh& mesh) {
+    if (mesh.primitives.empty()) return;
+    // Distinct materials in first-use order; each primitive's group.
+    std::vector<Material> materials;
+    std::vector<std::uint32_t> group(mesh.primitives.size());
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const std::uint32_t m = mesh.primitives[p].material;
+        const Material material = m < mesh.materials.size() ? mesh.materials[m] : Material{};
+        std::size_t g = 0;
+        while (g < materials.size() && !sameMaterial(materials[g], material)) ++g;
+        if (g == materials.size()) materials.push_back(material);
+        group[p] = static_cast<std::uint32_t>(g);
+    }
+    std::vector<std::uint32_t> indices;
+    indices.reserve(mesh.indices.size());
+    std::vector<MeshPrimitive> primitives;
+    for (std::uint32_t g = 0; g < materials.size(); ++g) {
+        MeshPrimitive merged{static_cast<std::uint32_t>(indices.size()), 0, g, {}};
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            if (group[p] != g) continue;
+            const MeshPrimitive& prim = mesh.primitives[p];
+            if (merged.name.empty()) merged.name = prim.name;
+            indices.insert(indices.end(), mesh.indices.begin() + prim.firstIndex,
+                           mesh.indices.begin() + prim.firstIndex + prim.indexCount);
+            merged.indexCount += prim.indexCount;
+        }
+        primitives.push_back(std::move(merged));
+    }
+    mesh.indices = std::move(indices);
+    mesh.primitives = std::move(primitives);
+    mesh.materials = std::move(materials);
 }
 
 }  // namespace ramus

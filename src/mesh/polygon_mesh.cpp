@@ -163,7 +163,7 @@ void appendPolygon(std::span<const Vec3> poly, const PolygonFrame& frame, EarCli
 }  // namespace
 
 Mesh buildPolygonMesh(std::span<const Vec3> vertices, std::span<const std::uint32_t> offsets,
-                      const Material& material) {
+                      const Material& material, std::vector<std::uint32_t>* vertexPolygons) {
     Mesh mesh;
     mesh.name = "leaves";
     const std::size_t polygons = offsets.empty() ? 0 : offsets.size() - 1;
@@ -184,6 +184,9 @@ Mesh buildPolygonMesh(std::span<const Vec3> vertices, std::span<const std::uint3
         if (!polygonFrame(poly, frame)) continue;
 
         appendPolygon(poly, frame, clipper, mesh);
+        if (vertexPolygons != nullptr) {
+            vertexPolygons->resize(mesh.positions.size(), static_cast<std::uint32_t>(p));
+        }
     }
     if (!mesh.indices.empty()) {
         Material sheet = material;

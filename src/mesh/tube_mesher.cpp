@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "ramus/error.hpp"
+#include "ramus/tree_wind.hpp"
 #include "ring_frames.hpp"
 
 namespace ramus {
@@ -61,9 +62,13 @@ private:
         double radius;
         Vec3 direction;  // unit, from the previous ring (unused for the first)
         double length;   // distance from the previous ring
+        NodeId node;     // the node at the ring (the chain's first node for its first ring)
+        double t;        // where along the edge into `node` (0: its parent, 1: the node)
     };
 
     void linkChains();
+    bool drawn(std::size_t node) const { return !tree_.nodes()[node].hidden; }
+    void setWind(std::uint32_t first, std::size_t count, const Ring& ring);
     bool startsChain(NodeId first) const;
     double startRadius(NodeId first) const;
     bool needsBaseCap(NodeId first) const;
@@ -82,6 +87,8 @@ private:
     const TubeMeshParams& params_;
     std::vector<double> radii_;
     std::vector<NodeId> next_;  // chain continuation per node (linkChains)
+    TreeWind wind_;             // when params.windAttributes
+    WindAttributes windOut_;
     int minSegments_ = 3;
     int maxSegments_ = 3;
     double trunkMultiplier_ = 1.0;
@@ -106,6 +113,7 @@ TubeBuilder::TubeBuilder(const BranchTree& tree, const TubeMeshParams& params)
     tables_.resize(static_cast<std::size_t>(maxSegments_ - minSegments_ + 1));
     radii_ = computeEdgeRadii(tree, params);
     linkChains();
+    if (params.windAttributes) wind_ = TreeWind(tree, params.windSeed);
     const Aabb box = tree.bounds();
     mergeDistance_ = 1e-6 * std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
     maxRadius_ = trunkMultiplier_ * radii_[0];
@@ -125,7 +133,7 @@ void TubeBuilder::linkChains() {
         const auto parent = static_cast<std::size_t>(child.parent);
         const BranchNode& p = tree_.nodes()[parent];
         if (next_[parent] == kUnset && child.branchDepth == p.branchDepth) {
-            next_[parent] = child.hidden || p.hidden ? kNoNode : static_cast<NodeId>(i);
+            next_[parent] = drawn(i) && drawn(parent) ? static_cast<NodeId>(i) : kNoNode;
         }
     }
     for (NodeId& next : next_) {
@@ -172,7 +180,7 @@ void TubeBuilder::reserve() {
     for (std::size_t i = 1; i < tree_.size(); ++i) {
         const BranchNode& node = tree_.nodes()[i];
         const auto id = static_cast<NodeId>(i);
-        if (node.hidden) continue;
+        if (!drawn(i)) continue;
         std::size_t n = 0;
         if (startsChain(id)) {
             n = static_cast<std::size_t>(segmentsFor(startRadius(id)));
@@ -197,6 +205,7 @@ void TubeBuilder::reserve() {
     mesh_.tangents.resize(vertices);
     mesh_.uvs.resize(vertices);
     mesh_.indices.resize(triangles * 3);
+    if (params_.windAttributes) windOut_.resize(vertices);
 }
 
 // Collects the rings of the chain whose first edge ends at `first`: merges nodes that coincide
@@ -205,7 +214,7 @@ void TubeBuilder::reserve() {
 void TubeBuilder::gatherRings(NodeId first) {
     rings_.clear();
     const Vec3& start = tree_.node(tree_.node(first).parent).position;
-    rings_.push_back({start, startRadius(first), Vec3::Zero(), 0.0});
+    rings_.push_back({start, startRadius(first), Vec3::Zero(), 0.0, first, 0.0});
     const double maxK = params_.curveReduction;
     const double merge2 = mergeDistance_ * mergeDistance_;
     for (NodeId x = first; x != kNoNode;) {
@@ -223,12 +232,17 @@ void TubeBuilder::gatherRings(NodeId first) {
                 keep = out2 <= merge2 || direction.dot(out) <= maxK * std::sqrt(out2);
             }
             if (keep) {
-                rings_.push_back(
-                    {node.position, radii_[static_cast<std::size_t>(x)], direction, length});
+                rings_.push_back({node.position, radii_[static_cast<std::size_t>(x)], direction,
+                                  length, x, 1.0});
             }
         }
         x = next;
     }
+}
+
+// Wind data of a ring's (or its cap's) vertices.
+void TubeBuilder::setWind(std::uint32_t first, std::size_t count, const Ring& ring) {
+    if (params_.windAttributes) windOut_.set(first, count, wind_.at(ring.node, ring.t));
 }
 
 // Appends one ring (n + 1 vertices, the last repeating the first with u = 1).
@@ -256,6 +270,7 @@ std::uint32_t TubeBuilder::emitRing(const Ring& ring, const Vec3& e1, const Vec3
         tangents[i] = Vec4f(tangent.x(), tangent.y(), tangent.z(), 1.0f);
         uvs[i] = Vec2f(table.us[i], v);
     }
+    setWind(base, count, ring);
     vertexCount_ += static_cast<std::uint32_t>(count);
     return base;
 }
@@ -296,6 +311,7 @@ void TubeBuilder::emitCap(std::uint32_t ringBase, const Ring& ring, const Vec3& 
         uvs[centre + 1 + i] = Vec2f(0.5f + 0.5f * table.cosines[i], 0.5f + vSign * table.sines[i]);
     }
     std::fill_n(mesh_.normals.data() + centre, n + 1, nf);
+    setWind(centre, n + 1, ring);
     std::fill_n(mesh_.tangents.data() + centre, n + 1, tangent);
     std::uint32_t* out = mesh_.indices.data() + indexCount_;
     for (std::uint32_t i = 0; i < n; ++i, out += 3) {
@@ -350,13 +366,17 @@ Mesh TubeBuilder::build() {
     reserve();
     for (std::size_t i = 1; i < tree_.size(); ++i) {
         const auto first = static_cast<NodeId>(i);
-        if (!tree_.node(first).hidden && startsChain(first)) meshChain(first);
+        if (drawn(i) && startsChain(first)) meshChain(first);
     }
     mesh_.positions.resize(vertexCount_);
     mesh_.normals.resize(vertexCount_);
     mesh_.tangents.resize(vertexCount_);
     mesh_.uvs.resize(vertexCount_);
     mesh_.indices.resize(indexCount_);
+    if (params_.windAttributes) {
+        windOut_.resize(vertexCount_);
+        windOut_.moveInto(mesh_);
+    }
     if (!mesh_.indices.empty()) {
         mesh_.materials.push_back(params_.material);
         mesh_.primitives.push_back(

@@ -225,8 +225,9 @@ void addJointNodes(const Skeleton& skeleton, const std::vector<Mat4>& local, Sce
         }
         node.extrasJson = boneExtras(bone, s);
         // World matrix exactly as the file states it (Scene::worldTransform's formula).
-        const Eigen::Isometry3d local = Eigen::Translation3d(node.translation) * node.rotation;
-        world[i] = bone.parent < 0 ? local.matrix() : Mat4(world[bone.parent] * local.matrix());
+        const Eigen::Isometry3d nodeLocal = Eigen::Translation3d(node.translation) * node.rotation;
+        world[i] =
+            bone.parent < 0 ? nodeLocal.matrix() : Mat4(world[bone.parent] * nodeLocal.matrix());
         skin.joints.push_back(static_cast<int>(i));
         skin.inverseBindMatrices.push_back(Eigen::Isometry3d(world[i]).inverse().matrix());
         scene.nodes.push_back(std::move(node));
@@ -314,13 +315,18 @@ void SkeletonMeshBuilder::addBox(std::size_t bone, BoneKind kind, const Vec3& ex
     mesh_.normals.resize(base + kBoxVertices);
     mesh_.joints.resize(base + kBoxVertices, {joint, 0, 0, 0});
     mesh_.weights.resize(base + kBoxVertices, Vec4f(1.0f, 0.0f, 0.0f, 0.0f));
+    Vec3f* positions = mesh_.positions.data() + base;
+    Vec3f* normals = mesh_.normals.data() + base;
     for (int v = 0; v < kBoxVertices; ++v) {
-        mesh_.positions[base + v] = corners[kBoxCornerOf[v]];
-        mesh_.normals[base + v] = faceNormals[v / 4];
+        positions[v] = corners[kBoxCornerOf[v]];
+        normals[v] = faceNormals[v / 4];
     }
     std::vector<std::uint32_t>& indices = kindIndices_[static_cast<int>(kind)];
-    for (std::uint32_t i : kBoxIndexPattern)
-        indices.push_back(static_cast<std::uint32_t>(base) + i);
+    const std::size_t first = indices.size();
+    indices.resize(first + kBoxIndices);
+    for (int k = 0; k < kBoxIndices; ++k) {
+        indices[first + k] = static_cast<std::uint32_t>(base) + kBoxIndexPattern[k];
+    }
 }
 
 void SkeletonMeshBuilder::addMesh(std::size_t bone, BoneKind kind, const Mesh& mesh) {

@@ -81,7 +81,10 @@ TEST(BatchCli, MakesEveryItemOfEveryJobWithASummary) {
     EXPECT_EQ(summary["done"], 11);
     EXPECT_EQ(summary["failed"], 0);
     const auto files = filesUnder(dir / "out");
-    EXPECT_EQ(files.size(), 6u * 2 + 3u * 2 + 2u * 2);  // glb+json, glb+png, obj+mtl
+    // glb+json, glb+png, obj+mtl+bark textures (as `ramus colonize` writes them)
+    EXPECT_EQ(files.size(), 6u * 2 + 3u * 2 + 2u * 4);
+    EXPECT_TRUE(files.count("trees/tree_1_bark.png"));
+    EXPECT_TRUE(files.count("trees/tree_1_bark_normal.png"));
     EXPECT_TRUE(files.count("skel/skel_5.json"));
     EXPECT_TRUE(files.count("plants/plant_2.png"));
     EXPECT_TRUE(files.count("trees/tree_1.mtl"));

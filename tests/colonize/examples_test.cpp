@@ -37,7 +37,7 @@ std::string growGlb(const ColonizeConfig& config) {
     return encodeGlb(makeSingleMeshScene(mesh, "tree"));
 }
 
-TEST(ColonizeExamples, ThereAreSeven) { EXPECT_EQ(exampleFiles().size(), 7u); }
+TEST(ColonizeExamples, ThereAreEight) { EXPECT_EQ(exampleFiles().size(), 8u); }
 
 TEST(ColonizeExamples, EveryExampleGrowsAndStopsOnItsOwn) {
     for (const std::string& file : exampleFiles()) {

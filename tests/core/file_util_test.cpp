@@ -26,6 +26,15 @@ TEST(FileUtil, WriteThenReadRoundTripsAndLeavesNoTempFile) {
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 }
 
+TEST(FileUtil, WritingPartsWritesTheirConcatenation) {
+    const fs::path dir = scratchDir("parts");
+    const std::string path = (dir / "a.bin").string();
+    const std::string_view parts[] = {"head", "", std::string_view("\0bin", 4)};
+    writeFileAtomic(path, parts);
+    EXPECT_EQ(readFile(path), std::string("head\0bin", 8));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
 TEST(FileUtil, FailedWriteKeepsTheOldFileAndLeavesNothingBehind) {
     const fs::path dir = scratchDir("failed");
     const std::string path = (dir / "missing_dir" / "a.bin").string();

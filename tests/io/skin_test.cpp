@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "io/gltf_accessors.hpp"
 #include "io/io_fixtures.hpp"
@@ -152,6 +153,37 @@ TEST(Skin, JointsAreBytesAndTheMatricesHaveNoBufferTarget) {
     EXPECT_EQ(doc["scenes"][0]["nodes"], json::array({0, 2}));
 }
 
+TEST(Skin, RigidWeightsAreNormalizedBytesThatReadBackExactly) {
+    Scene scene = makeSkinnedScene();
+    Mesh& mesh = scene.meshes[0];
+    for (std::size_t v = 0; v < mesh.weights.size(); ++v) {  // every vertex on one joint
+        mesh.joints[v] = {static_cast<std::uint16_t>(v % 2), 0, 0, 0};
+        mesh.weights[v] = Vec4f(1.0f, 0.0f, 0.0f, 0.0f);
+    }
+    const std::string path = (scratchDir("skin_rigid") / "rigid.glb").string();
+    writeGlb(scene, path);
+    exportForValidator(scene, "skinned_rigid");
+    const json doc = glbJson(readFile(path));
+    const json& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
+    const json& weights = doc["accessors"][attributes["WEIGHTS_0"].get<int>()];
+    EXPECT_EQ(weights["componentType"], 5121);  // UNSIGNED_BYTE
+    EXPECT_EQ(weights["normalized"], true);
+    const LoadedGltf gltf = loadGlb(path);
+    const io::Reader reader{gltf.model, gltf.path};
+    const std::vector<double> read = io::readAccessor(
+        reader, gltf.model.meshes[0].primitives[0].attributes.at("WEIGHTS_0"), 4, "W");
+    ASSERT_EQ(read.size(), 4 * mesh.weights.size());
+    for (std::size_t i = 0; i < read.size(); ++i) EXPECT_EQ(read[i], i % 4 == 0 ? 1.0 : 0.0) << i;
+}
+
+TEST(Skin, BlendedWeightsStayFloats) {
+    const json doc = glbJson(encodeGlb(makeSkinnedScene()));  // 0.25 / 0.75 on some vertices
+    const json& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
+    const json& weights = doc["accessors"][attributes["WEIGHTS_0"].get<int>()];
+    EXPECT_EQ(weights["componentType"], 5126);
+    EXPECT_FALSE(weights.contains("normalized"));
+}
+
 TEST(Skin, EncodingTwiceGivesIdenticalBytes) {
     const Scene scene = makeSkinnedScene();
     EXPECT_EQ(encodeGlb(scene), encodeGlb(scene));
@@ -229,14 +261,39 @@ TEST(Skin, ReadGltfReadsTheGeometryOfASkinnedFile) {
     EXPECT_EQ(read.nodes[2].mesh, 0);
 }
 
-TEST(Skin, ObjWriterWritesTheBindPose) {
+TEST(Skin, ObjWriterWritesTheBindPoseWithOneGroupPerJoint) {
     const Scene scene = makeSkinnedScene();
     const std::filesystem::path dir = scratchDir("skin_obj");
     writeObj(scene, (dir / "leg.obj").string());
     const std::string obj = readFile((dir / "leg.obj").string());
-    EXPECT_NE(obj.find("o leg_mesh\n"), std::string::npos);
     EXPECT_NE(obj.find("v -0.5 1 0.5\n"), std::string::npos);  // a top corner, not bent
-    EXPECT_EQ(obj.find("o hip\n"), std::string::npos);         // joints have no geometry
+    EXPECT_EQ(obj.find("o leg_mesh\n"), std::string::npos);    // groups per joint instead
+    // Groups in skin order; every face uses only the vertices of its own group, which follow
+    // the group's "o" line (OBJ indices are global and 1-based).
+    std::vector<std::string> groups;
+    std::size_t faces = 0, vertices = 0, groupStart = 0;
+    std::istringstream in(obj);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("o ", 0) == 0) {
+            groups.push_back(line.substr(2));
+            groupStart = vertices;
+        }
+        if (line.rfind("v ", 0) == 0) ++vertices;
+        if (line.rfind("usemtl ", 0) == 0) EXPECT_FALSE(groups.empty());
+        if (line.rfind("f ", 0) != 0) continue;
+        ++faces;
+        std::istringstream corners(line.substr(2));
+        for (std::string corner; corners >> corner;) {
+            const std::size_t v = std::stoul(corner.substr(0, corner.find('/')));
+            EXPECT_GT(v, groupStart) << line;
+            EXPECT_LE(v, vertices) << line;
+        }
+    }
+    EXPECT_EQ(groups, (std::vector<std::string>{"hip", "knee"}));
+    EXPECT_EQ(faces, 12u);
+    // The bottom face (y = 0) is all hip and the top face (y = 1) all knee.
+    EXPECT_LT(obj.find("v -0.5 0 -0.5\n"), obj.find("o knee\n"));
+    EXPECT_GT(obj.rfind("v 0.5 1 0.5\n"), obj.find("o knee\n"));
 }
 
 TEST(Skin, AppendMeshKeepsJointsAndWeightsWhenBothSidesHaveThem) {

@@ -452,14 +452,20 @@ TEST(SkeletonScene, GlbIsDeterministicAndReadsBack) {
     EXPECT_EQ(read.meshes[0].positions, scene.meshes[0].positions);
 }
 
-TEST(SkeletonScene, ObjShowsOneGroupPerBoneKind) {
-    const Scene scene = skeletonToScene(makeSkeleton());
+TEST(SkeletonScene, ObjShowsOneGroupPerBoneWithItsKindsMaterial) {
+    const Skeleton skeleton = makeSkeleton();
+    const Scene scene = skeletonToScene(skeleton);
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / "ramus_skeleton_scene_obj";
     std::filesystem::create_directories(dir);
     writeObj(scene, (dir / "s.obj").string());
     const std::string obj = readFile((dir / "s.obj").string());
-    EXPECT_NE(obj.find("o skeleton\n"), std::string::npos);
+    EXPECT_EQ(obj.find("o skeleton\n"), std::string::npos);  // the bones, not the skinned mesh
+    for (const Bone& bone : skeleton.bones) {
+        if (bone.extents.minCoeff() <= 0.0) continue;  // no box
+        EXPECT_NE(obj.find("o " + bone.name() + "\ng " + bone.name() + "\n"), std::string::npos)
+            << bone.name();
+    }
     for (const char* kind : {"vertebra", "rib", "pelvis", "thigh", "shank", "foot"}) {
         EXPECT_NE(obj.find(std::string("usemtl bone_") + kind + "\n"), std::string::npos) << kind;
     }

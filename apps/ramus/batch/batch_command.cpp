@@ -157,6 +157,7 @@ void run(const BatchOptions& o) {
     const Shard shard = parseShard(o.shard);
     const BatchManifest manifest = loadBatchManifest(o.manifest);
     checkJobInputs(manifest);
+    const JobBoneLibraries bones = loadJobBoneLibraries(manifest);
     const std::vector<BatchItem> items = shardItems(manifest, shard.index, shard.count);
     const SkeletonStats stats = SkeletonStats::builtin();
     const fs::path dir(o.outputDirectory);
@@ -184,7 +185,7 @@ void run(const BatchOptions& o) {
                 continue;
             }
             try {
-                makeItem(manifest, items[k], stats, o.outputDirectory);
+                makeItem(manifest, items[k], stats, bones, o.outputDirectory);
                 outcomes[k].state = Outcome::Done;
             } catch (const std::exception& e) {
                 outcomes[k] = {Outcome::Failed, e.what()};

@@ -2,6 +2,7 @@
 #include "batch/batch_items.hpp"
 
 #include <filesystem>
+#include <map>
 
 #include "json_inputs.hpp"
 #include "ramus/bones.hpp"
@@ -54,21 +55,34 @@ void onlyKeys(const nlohmann::json& inputs, std::initializer_list<const char*> k
     }
 }
 
+BoneResolution skeletonResolution(const nlohmann::json& inputs) {
+    return choice(inputs, "resolution", BoneResolution::Box, parseBoneResolution,
+                  "box, low or high");
+}
+
 /// The skeleton inputs without the keys the batch decides itself.
-SkeletonPlanRequest skeletonPlan(const nlohmann::json& inputs) {
+SkeletonPlanRequest skeletonPlan(const BatchManifest& manifest, const nlohmann::json& inputs) {
     rejectKeys(inputs, {"count", "seed", "name"},
                "set by the batch (the job's count, the item's seed, the output's name)");
     for (const auto& [key, value] : inputs.items()) {
-        if (key != "resolution" && !isSkeletonInputKey(key)) {
+        if (key != "resolution" && key != "bones" && !isSkeletonInputKey(key)) {
             throw Error("inputs." + key +
                         ": unknown key; expected one of the skeleton inputs of "
                         "docs/batch.md (legs, wings, arms, fins, …)");
         }
     }
-    (void)choice(inputs, "resolution", BoneResolution::Box, parseBoneResolution,
-                 "box, low or high");
+    const BoneResolution resolution = skeletonResolution(inputs);
+    if (inputs.contains("bones")) {
+        (void)inputFile(manifest, inputs, "bones");
+        if (resolution == BoneResolution::Box) {
+            throw Error(
+                "inputs.bones: the box resolution draws boxes, not bone models; expected "
+                "resolution low or high");
+        }
+    }
     nlohmann::json plain = inputs;
     plain.erase("resolution");
+    plain.erase("bones");
     return skeletonPlanFromJson(plain, 1);
 }
 
@@ -104,18 +118,19 @@ void writeModel(const Scene& scene, const fs::path& dir, const BatchJob& job,
 }
 
 void makeSkeleton(const BatchManifest& manifest, const BatchItem& item, const SkeletonStats& stats,
-                  const fs::path& dir) {
+                  const JobBoneLibraries& bones, const fs::path& dir) {
     const BatchJob& job = jobOf(manifest, item);
-    SkeletonPlanRequest plan = skeletonPlan(job.inputs);
+    SkeletonPlanRequest plan = skeletonPlan(manifest, job.inputs);
     plan.count = 1;
     plan.seed = itemSeed(manifest, item);
     const std::string name = fs::path(expandOutput(job.output, item)).stem().string();
     plan.name = name;
     const PlannedSkeleton planned = planSkeletons(stats, plan).front();
     const Skeleton skeleton = buildSkeleton(planned.design);
-    const BoneResolution resolution = choice(job.inputs, "resolution", BoneResolution::Box,
-                                             parseBoneResolution, "box, low or high");
-    writeModel(skeletonSceneAt(skeleton, resolution, planned.design.headKind), dir, job, item);
+    const std::optional<BoneLibrary>& library = bones.at(item.job);
+    writeModel(skeletonSceneAt(skeleton, skeletonResolution(job.inputs), planned.design.headKind,
+                               library ? &*library : nullptr),
+               dir, job, item);
     const fs::path metadata = (dir / expandOutput(job.output, item)).replace_extension(".json");
     writeSkeletonMetadata(metadata.string(), planned.design, skeleton, name, planned.seed);
 }
@@ -132,7 +147,8 @@ void makeLsystem(const BatchManifest& manifest, const BatchItem& item, const fs:
     const ModuleString word = deriveLSystem(system, derive);
     const TurtleResult shape =
         interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings));
-    writeModel(makeSingleMeshScene(plantMesh(shape, {}), "tree"), dir, job, item);
+    const AssetSettings assets = finishAssets(AssetSettings{});  // as `ramus lsystem FILE`
+    writeModel(plantModel(shape, assets.mesh, assets.lods).scene(), dir, job, item);
 }
 
 void makeColonize(const BatchManifest& manifest, const BatchItem& item, const fs::path& dir) {
@@ -140,9 +156,8 @@ void makeColonize(const BatchManifest& manifest, const BatchItem& item, const fs
     ColonizeConfig config = colonizeConfigOf(manifest, job.inputs);
     config.seed = itemSeed(manifest, item);
     const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
-    TubeMeshParams params;
-    applyMeshOverrides(config, params);
-    writeModel(makeSingleMeshScene(forestMesh(result.trees, params), "tree"), dir, job, item);
+    const AssetSettings assets = colonizeAssets(config);  // as `ramus colonize CONFIG`
+    writeModel(forestModel(result.trees, assets.mesh, assets.lods).scene(), dir, job, item);
 }
 
 }  // namespace
@@ -170,7 +185,7 @@ void checkJobInputs(const BatchManifest& manifest) {
         try {
             switch (job.kind) {
                 case BatchKind::Skeleton:
-                    (void)skeletonPlan(job.inputs);
+                    (void)skeletonPlan(manifest, job.inputs);
                     break;
                 case BatchKind::Lsystem:
                     (void)lsystemOf(manifest, job.inputs);
@@ -189,12 +204,34 @@ void checkJobInputs(const BatchManifest& manifest) {
     }
 }
 
+JobBoneLibraries loadJobBoneLibraries(const BatchManifest& manifest) {
+    JobBoneLibraries libraries(manifest.jobs.size());
+    std::map<std::pair<std::string, BoneResolution>, BoneLibrary> loaded;
+    for (std::size_t j = 0; j < manifest.jobs.size(); ++j) {
+        const BatchJob& job = manifest.jobs[j];
+        if (job.kind != BatchKind::Skeleton || !job.inputs.contains("bones")) continue;
+        const std::pair key(inputFile(manifest, job.inputs, "bones"),
+                            skeletonResolution(job.inputs));
+        auto it = loaded.find(key);
+        if (it == loaded.end()) {
+            try {
+                it = loaded.emplace(key, loadBoneLibrary(key.first, key.second)).first;
+            } catch (const Error& e) {
+                throw Error(e.loc(), e.message() + " (" + manifest.path + ": jobs[" +
+                                         std::to_string(j) + "].inputs.bones)");
+            }
+        }
+        libraries[j] = it->second;
+    }
+    return libraries;
+}
+
 void makeItem(const BatchManifest& manifest, const BatchItem& item, const SkeletonStats& stats,
-              const std::string& outputDirectory) {
+              const JobBoneLibraries& bones, const std::string& outputDirectory) {
     const fs::path dir(outputDirectory);
     switch (jobOf(manifest, item).kind) {
         case BatchKind::Skeleton:
-            makeSkeleton(manifest, item, stats, dir);
+            makeSkeleton(manifest, item, stats, bones, dir);
             break;
         case BatchKind::Lsystem:
             makeLsystem(manifest, item, dir);

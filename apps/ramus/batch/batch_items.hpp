@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "batch/batch_manifest.hpp"
+#include "ramus/bones.hpp"
 #include "ramus/skeleton_stats.hpp"
 
 namespace ramus::cli {
@@ -23,9 +25,16 @@ std::vector<std::string> itemOutputs(const BatchManifest& manifest, const BatchI
 /// wrong type, missing files), so a typo fails at once rather than in every item.
 void checkJobInputs(const BatchManifest& manifest);
 
-/// Makes one item and writes its files under `outputDirectory` (each atomically). Throws Error
-/// with the reason when the item cannot be made.
+/// Per job: the user bone library its inputs name ("bones"), or nullopt for the default one.
+using JobBoneLibraries = std::vector<std::optional<BoneLibrary>>;
+
+/// Loads the bone libraries of the skeleton jobs once (a directory named by several jobs at one
+/// resolution once), before any item runs. Throws Error naming the library file and the job.
+JobBoneLibraries loadJobBoneLibraries(const BatchManifest& manifest);
+
+/// Makes one item and writes its files under `outputDirectory` (each atomically); `bones` is
+/// loadJobBoneLibraries(manifest). Throws Error with the reason when the item cannot be made.
 void makeItem(const BatchManifest& manifest, const BatchItem& item, const SkeletonStats& stats,
-              const std::string& outputDirectory);
+              const JobBoneLibraries& bones, const std::string& outputDirectory);
 
 }  // namespace ramus::cli

@@ -159,7 +159,10 @@ nlohmann::json lsystemRequest(const nlohmann::json& request, const StudioLimits&
         interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings));
     clock.lap("interpret");
     deadline.check("turtle interpretation");
-    Mesh mesh = cli::plantMesh(shape, meshParams);
+    cli::AssetSettings assets;  // as `ramus lsystem` with the request's mesher settings
+    assets.mesh.tube = meshParams;
+    assets = cli::finishAssets(std::move(assets));
+    Mesh mesh = cli::plantModel(shape, assets.mesh, {}).mesh;
     clock.lap("mesh");
     deadline.check("meshing");
     nlohmann::ordered_json stats = {
@@ -200,9 +203,11 @@ nlohmann::json colonizeRequest(const nlohmann::json& request, const StudioLimits
     const ColonizeResult result = growFromConfig(config, points);
     clock.lap("grow");
     deadline.check("growth");
-    TubeMeshParams meshParams;
-    applyMeshOverrides(config, meshParams);
-    Mesh mesh = cli::forestMesh(result.trees, meshParams);
+    // The config's whole asset (leaves, textures, weld) as `ramus colonize` makes it; the view
+    // shows the full detail, so LODs are left out.
+    const cli::AssetSettings assets =
+        withTextErrors([&] { return cli::colonizeAssets(config); });
+    Mesh mesh = cli::forestModel(result.trees, assets.mesh, {}).mesh;
     clock.lap("mesh");
     deadline.check("meshing");
     nlohmann::ordered_json stats = {{"trees", result.trees.size()},

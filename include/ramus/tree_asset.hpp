@@ -1,0 +1,69 @@
+// Production tree meshes (issue 9): bark tubes, L-system polygons and generated leaves in one
+// mesh with one primitive per material, optional wind attributes, and levels of detail.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ramus/branch_tree.hpp"
+#include "ramus/leaves.hpp"
+#include "ramus/mesh.hpp"
+#include "ramus/tube_mesher.hpp"
+
+namespace ramus {
+
+/// One tree to mesh: its branches and, from an L-system, its `{ . }` polygons (TurtleResult's
+/// layout; polygonNodes may be empty, then polygons follow the root's wind).
+struct TreeMeshInput {
+    const BranchTree* tree = nullptr;
+    std::span<const Vec3> polygonVertices;
+    std::span<const std::uint32_t> polygonOffsets;
+    std::span<const NodeId> polygonNodes;
+};
+
+/// How trees become a mesh.
+struct TreeMeshParams {
+    TubeMeshParams tube;  ///< bark; tube.windAttributes also adds wind data to the leaves
+    /// Bark as one closed surface per tree (buildWeldedTreeMesh, docs/welded.md) instead of
+    /// overlapping tubes. It writes no wind data: not together with tube.windAttributes.
+    bool weldJunctions = false;
+    bool leaves = false;  ///< generate leaves (buildLeafMesh) besides the polygons
+    LeafParams leaf;      ///< generated leaves, and the atlas, seed and LOD keep of the polygons
+    /// The `{ . }` polygons' material (their primitive is named after it): they have their own
+    /// outline, so a leaf texture's cut-out does not suit them.
+    Material polygonMaterial{"leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f, 0.8f, true};
+};
+
+/// The full-detail mesh "tree" of all `trees`: tubes, polygons as leaves (buildLeafPolygons),
+/// generated leaves when params.leaves; then mergePrimitivesByMaterial, so a forest has one
+/// "bark" and one "leaves" primitive. Nothing drawn → empty mesh.
+Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& params);
+
+/// One level of detail.
+struct TreeLod {
+    double ratio = 1.0;                    ///< the requested fraction of LOD 0's triangles
+    std::size_t targetTriangles = 0;       ///< ratio × LOD 0's triangle count, rounded
+    Mesh mesh;                             ///< named "tree_LOD<i>"
+    int minSegments = 0, maxSegments = 0;  ///< ring segments used
+    std::size_t prunedNodes = 0;           ///< branch nodes whose edges were left out
+    double leafKeep = 1.0;                 ///< fraction of leaves kept
+    bool leafCards = false;                ///< blades replaced by cards
+};
+
+/// Levels of detail by tree-aware reduction (no generic simplifier, so every kept vertex keeps
+/// its exact UVs and wind data): the leaves get their share of the target by thinning (kept
+/// leaves grow by 1/√keep) and, below half, blades become cards; the bark gets the rest by
+/// fewer ring segments and then by pruning the thinnest branch edges (by radius, ties: the
+/// newest node first; a pruned edge takes everything above it). Radii, wind data and leaf
+/// placement are always those of the whole tree. ratios[i] in (0, 1]; LOD 0 is the full mesh
+/// when ratios[0] = 1. The result's triangle counts land near ratio × (full count) — within
+/// a few percent unless the trunk alone is above the target. Throws Error for ratios outside
+/// (0, 1] or an empty list.
+std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
+                                   const TreeMeshParams& params, std::span<const double> ratios);
+
+/// Triangles of `mesh` in primitives called `name` (e.g. "bark", "leaves").
+std::size_t primitiveTriangles(const Mesh& mesh, std::string_view name);
+
+}  // namespace ramus

@@ -1,0 +1,264 @@
+// Tree assets (issue 9): one mesh of bark and leaves, and levels of detail. The LOD reduction
+// is tree-aware rather than a generic simplifier (e.g. Garland & Heckbert's edge collapse):
+// trees are many thin disconnected tubes and cards, which collapse badly, while the tree
+// structure says directly what to drop first — fewer ring segments, then the thinnest twigs,
+// and fewer but larger leaves (as foliage LODs in game pipelines do). Vertices that remain are
+// exactly those of the full mesh, so UVs and wind data never drift between levels.
+#include "ramus/tree_asset.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "ramus/error.hpp"
+#include "ramus/welded_mesher.hpp"
+
+namespace ramus {
+
+namespace {
+
+// What one level draws.
+struct Detail {
+    int minSegments = 4, maxSegments = 16;
+    std::size_t prune = 0;  // entries of the prune order left out
+    bool cards = false;
+    double keep = 1.0;
+};
+
+class TreeMesher {
+public:
+    TreeMesher(std::span<const TreeMeshInput> trees, const TreeMeshParams& params)
+        : trees_(trees), params_(params) {
+        for (const TreeMeshInput& in : trees)
+            radii_.push_back(computeEdgeRadii(*in.tree, params.tube));
+    }
+
+    Mesh bark(const Detail& d) const {
+        TubeMeshParams tube = params_.tube;
+        tube.minSegments = d.minSegments;
+        tube.maxSegments = d.maxSegments;
+        Mesh mesh;
+        mesh.name = "tree";
+        for (std::size_t t = 0; t < trees_.size(); ++t) {
+            if (d.prune == 0) {
+                appendMesh(mesh, branches(*trees_[t].tree, tube));
+            } else {
+                TubeMeshParams widths = tube;
+                widths.radiusMode = RadiusMode::Widths;
+                appendMesh(mesh, branches(prunedTree(t, d.prune), widths));
+            }
+        }
+        return mesh;
+    }
+
+    // One tree's bark: tubes, or one welded surface.
+    Mesh branches(const BranchTree& tree, const TubeMeshParams& tube) const {
+        if (!params_.weldJunctions) return buildTubeMesh(tree, tube);
+        WeldedMeshParams welded;
+        welded.tube = tube;
+        return buildWeldedTreeMesh(tree, welded);
+    }
+
+    Mesh leaves(const Detail& d) const {
+        LeafParams leaf = params_.leaf;
+        leaf.keep = d.keep;
+        if (d.cards) leaf.shape = LeafShape::Card;
+        LeafParams polygons = leaf;
+        polygons.material = params_.polygonMaterial;
+        Mesh mesh;
+        mesh.name = "tree";
+        for (const TreeMeshInput& in : trees_) {
+            if (in.polygonOffsets.size() > 1) {
+                appendMesh(mesh, buildLeafPolygons(*in.tree, in.polygonVertices, in.polygonOffsets,
+                                                   in.polygonNodes, polygons, params_.tube));
+            }
+            if (params_.leaves) appendMesh(mesh, buildLeafMesh(*in.tree, leaf, params_.tube));
+        }
+        return mesh;
+    }
+
+    Mesh both(const Detail& d) const {
+        Mesh mesh = bark(d);
+        appendMesh(mesh, leaves(d));
+        mergePrimitivesByMaterial(mesh);
+        return mesh;
+    }
+
+    std::size_t pruneOrderSize() {
+        buildPruneOrder();
+        return order_.size();
+    }
+
+private:
+    // Edges thinnest first (ties: the newest node first, so outer twigs go before inner ones)
+    // over all trees; made on first use.
+    void buildPruneOrder() {
+        if (!order_.empty()) return;
+        for (std::size_t t = 0; t < trees_.size(); ++t) {
+            for (std::size_t i = 1; i < trees_[t].tree->size(); ++i) order_.emplace_back(t, i);
+        }
+        std::sort(order_.begin(), order_.end(), [&](const auto& a, const auto& b) {
+            const double ra = radii_[a.first][a.second], rb = radii_[b.first][b.second];
+            if (ra != rb) return ra < rb;
+            if (a.second != b.second) return a.second > b.second;
+            return a.first < b.first;
+        });
+    }
+
+    // Tree t with the first `prune` edges of the order (and everything above them) hidden and
+    // every radius fixed to the whole tree's, so hiding changes nothing else.
+    BranchTree prunedTree(std::size_t t, std::size_t prune) const {
+        BranchTree tree = *trees_[t].tree;
+        std::vector<std::uint8_t> cut(tree.size(), 0);
+        for (std::size_t k = 0; k < prune && k < order_.size(); ++k) {
+            if (order_[k].first == t) cut[order_[k].second] = 1;
+        }
+        for (std::size_t i = 0; i < tree.size(); ++i) {
+            BranchNode& node = tree.node(static_cast<NodeId>(i));
+            node.radius = radii_[t][i];
+            if (i == 0) continue;
+            cut[i] = cut[i] | cut[static_cast<std::size_t>(node.parent)];
+            if (cut[i]) node.hidden = true;
+        }
+        return tree;
+    }
+
+    std::span<const TreeMeshInput> trees_;
+    const TreeMeshParams& params_;
+    std::vector<std::vector<double>> radii_;
+    std::vector<std::pair<std::size_t, std::size_t>> order_;
+};
+
+std::size_t triangles(const Mesh& mesh) { return mesh.triangleCount(); }
+
+// Leaf share of a level: `target` leaf triangles from `blade` (all leaves at full detail) and
+// `card` (all leaves with generated blades as cards) triangles. Preferring coverage keeps all
+// leaves as cards when even they are under the target (the bark then gets the rest).
+void planLeaves(double target, double blade, double card, bool preferCoverage, Detail& d) {
+    d.cards = false;
+    d.keep = 1.0;
+    if (blade <= 0.0) return;
+    const double keepBlade = std::clamp(target / blade, 1e-9, 1.0);
+    const double keepCard = std::clamp(target / card, 1e-9, 1.0);
+    const bool useCards =
+        card < blade && target < 0.5 * blade && (preferCoverage || keepCard * card >= 0.9 * target);
+    d.cards = useCards;
+    d.keep = useCards ? keepCard : keepBlade;
+}
+
+// Ring segment pairs from the full (min, max) down to (3, 3): max first, then both.
+std::vector<std::pair<int, int>> segmentSteps(int minSegments, int maxSegments) {
+    std::vector<std::pair<int, int>> steps;
+    for (int m = maxSegments; m >= minSegments; --m) steps.emplace_back(minSegments, m);
+    for (int m = minSegments - 1; m >= 3; --m) steps.emplace_back(m, m);
+    return steps;
+}
+
+// The bark detail closest to `target` triangles: the first segment step at or below it when
+// that is within 3 %, else pruning (bisection on the number of pruned edges) from the step
+// before it.
+void planBark(TreeMesher& mesher, double target, Detail& d) {
+    const auto steps = segmentSteps(d.minSegments, d.maxSegments);
+    std::size_t above = 0;
+    std::size_t j = 0;
+    for (; j < steps.size(); ++j) {
+        Detail trial = d;
+        std::tie(trial.minSegments, trial.maxSegments) = steps[j];
+        const double count = static_cast<double>(triangles(mesher.bark(trial)));
+        if (count <= target) {
+            if (j == 0 || count >= 0.97 * target) {
+                std::tie(d.minSegments, d.maxSegments) = steps[j];
+                return;
+            }
+            break;
+        }
+        above = j;
+    }
+    std::tie(d.minSegments, d.maxSegments) = steps[j < steps.size() ? j - 1 : above];
+    std::size_t lo = 0, hi = mesher.pruneOrderSize();  // count(lo) > target
+    auto count = [&](std::size_t prune) {
+        Detail trial = d;
+        trial.prune = prune;
+        return static_cast<double>(triangles(mesher.bark(trial)));
+    };
+    if (count(hi) > target) {
+        d.prune = hi;
+        return;
+    }
+    while (hi - lo > 1) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        (count(mid) > target ? lo : hi) = mid;
+    }
+    d.prune = std::abs(count(lo) - target) < std::abs(count(hi) - target) ? lo : hi;
+}
+
+}  // namespace
+
+std::size_t primitiveTriangles(const Mesh& mesh, std::string_view name) {
+    std::size_t total = 0;
+    for (const MeshPrimitive& p : mesh.primitives) {
+        if (p.name == name) total += p.indexCount / 3;
+    }
+    return total;
+}
+
+Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& params) {
+    if (params.leaves) validateLeafParams(params.leaf);
+    Detail full;
+    full.minSegments = params.tube.minSegments;
+    full.maxSegments = std::max(params.tube.maxSegments, params.tube.minSegments);
+    return TreeMesher(trees, params).both(full);
+}
+
+std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
+                                   const TreeMeshParams& params, std::span<const double> ratios) {
+    if (ratios.empty()) throw Error("LOD ratios: expected at least one ratio in (0, 1]");
+    for (double r : ratios) {
+        if (!(r > 0.0 && r <= 1.0)) {
+            throw Error("LOD ratio " + std::to_string(r) + " is out of range; expected (0, 1]");
+        }
+    }
+    if (params.leaves) validateLeafParams(params.leaf);
+    TreeMesher mesher(trees, params);
+    Detail full;
+    full.minSegments = std::clamp(params.tube.minSegments, 3, 4096);
+    full.maxSegments = std::clamp(params.tube.maxSegments, full.minSegments, 4096);
+    const double bark0 = static_cast<double>(triangles(mesher.bark(full)));
+    const double leaves0 = static_cast<double>(triangles(mesher.leaves(full)));
+    Detail cards = full;
+    cards.cards = true;
+    const double cards0 =
+        params.leaves ? static_cast<double>(triangles(mesher.leaves(cards))) : leaves0;
+    const double total0 = bark0 + leaves0;
+
+    std::vector<TreeLod> lods;
+    for (std::size_t i = 0; i < ratios.size(); ++i) {
+        const double target = std::round(ratios[i] * total0);
+        Detail d = full;
+        if (ratios[i] < 1.0) {
+            planLeaves(ratios[i] * leaves0, leaves0, cards0, true, d);
+            const double leafShare = d.keep * (d.cards ? cards0 : leaves0);
+            double barkTarget = target - leafShare;
+            if (barkTarget > bark0) {  // the bark cannot take the rest: the leaves must
+                barkTarget = bark0;
+                planLeaves(target - bark0, leaves0, cards0, false, d);
+            }
+            planBark(mesher, barkTarget, d);
+        }
+        TreeLod lod;
+        lod.ratio = ratios[i];
+        lod.targetTriangles = static_cast<std::size_t>(target);
+        lod.mesh = mesher.both(d);
+        lod.mesh.name = "tree_LOD" + std::to_string(i);
+        lod.minSegments = d.minSegments;
+        lod.maxSegments = d.maxSegments;
+        lod.prunedNodes = d.prune;
+        lod.leafKeep = d.keep;
+        lod.leafCards = d.cards;
+        lods.push_back(std::move(lod));
+    }
+    return lods;
+}
+
+}  // namespace ramus
