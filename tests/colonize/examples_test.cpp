@@ -37,7 +37,7 @@ std::string growGlb(const ColonizeConfig& config) {
     return encodeGlb(makeSingleMeshScene(mesh, "tree"));
 }
 
-TEST(ColonizeExamples, ThereAreEight) { EXPECT_EQ(exampleFiles().size(), 8u); }
+TEST(ColonizeExamples, ThereAreNine) { EXPECT_EQ(exampleFiles().size(), 9u); }
 
 TEST(ColonizeExamples, EveryExampleGrowsAndStopsOnItsOwn) {
     for (const std::string& file : exampleFiles()) {
@@ -103,6 +103,25 @@ TEST(ColonizeExamples, TheObstacleExampleNeverGrowsIntoItsObstacle) {
         if (n.parent == kNoNode) continue;
         ASSERT_FALSE(
             segmentHitsShape(config.obstacles[0], tree.node(n.parent).position, n.position));
+    }
+}
+
+// Several trunks of one asset: each root grows its own stem up into the shared crown and takes
+// a fair share of it (competition splits the points instead of one stem taking all).
+TEST(ColonizeExamples, EveryTrunkOfTheMultiTrunkExampleReachesTheSharedCrown) {
+    const ColonizeConfig config =
+        loadColonizeConfig(RAMUS_SOURCE_DIR "/examples/colonize/multi_trunk.json");
+    ASSERT_EQ(config.params.roots.size(), 3u);
+    const ColonizeResult r = growFromConfig(config, configAttractionPoints(config));
+    ASSERT_EQ(r.trees.size(), 3u);
+    std::size_t total = 0;
+    for (const BranchTree& tree : r.trees) total += tree.size();
+    for (std::size_t t = 0; t < r.trees.size(); ++t) {
+        SCOPED_TRACE(t);
+        const BranchTree& tree = r.trees[t];
+        EXPECT_EQ(tree.node(0).position, config.params.roots[t]);
+        EXPECT_GT(tree.bounds().max.y(), 420.0 - 260.0);  // into the crown's lower half at least
+        EXPECT_GT(tree.size(), total / 10);                // a fair share, not a stub
     }
 }
 
