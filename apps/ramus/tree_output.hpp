@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ramus/branch_tree.hpp"
+#include "ramus/colonize.hpp"
 #include "ramus/mesh.hpp"
 #include "ramus/tube_mesher.hpp"
 #include "ramus/turtle.hpp"
@@ -26,6 +27,12 @@ struct TreeOutputs {
 
     bool any() const { return !model.empty() || !treeJson.empty() || !png.empty(); }
 };
+
+/// Default of `ramus colonize --max-iterations`, also the limit of batch colonize jobs.
+inline constexpr int kDefaultMaxIterations = 100'000;
+
+/// Error naming `configName` and the limit when the config's max_iterations is above `limit`.
+void checkIterationLimit(const ColonizeConfig& config, int limit, const std::string& configName);
 
 /// The mesh of an interpreted L-system: tapered tubes plus its `{ . }` polygons.
 Mesh plantMesh(const TurtleResult& shape, const TubeMeshParams& params);
