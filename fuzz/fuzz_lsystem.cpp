@@ -1,7 +1,7 @@
 // libFuzzer target for the .lsys language: parses arbitrary text, derives at most 5 steps under
-// a 100 000-module limit, and checks that the formatted word parses back to the same length.
-// Only ramus::Error may escape the library; anything else (crash, sanitizer report, other
-// exception, hang) is a bug. Run with scripts/fuzz.sh.
+// a 100 000-module and 8 MiB memory limit (so both limit paths are reached), and checks that the
+// formatted word parses back to the same length. Only ramus::Error may escape the library; anything
+// else (crash, sanitizer report, other exception, hang) is a bug. Run with scripts/fuzz.sh.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -33,6 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         ramus::DeriveOptions options;
         options.derivations = std::min(system.settings.derivations, 5);
         options.maxModules = 100000;
+        options.maxMemoryBytes = std::size_t{8} << 20;
         word = ramus::deriveLSystem(system, options);
     } catch (const ramus::Error&) {
         return 0;

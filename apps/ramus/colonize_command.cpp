@@ -24,7 +24,9 @@ struct ColonizeOptions {
     std::vector<std::string> seed;  // 0 or 1 value; a vector tells "absent" from "0"
     std::string points;
     std::size_t maxPoints = 50'000'000;
-    std::size_t maxNodes = 10'000'000;
+    std::size_t maxNodes = ColonizeParams{}.maxNodes;
+    int maxIterations = kDefaultMaxIterations;
+    std::size_t maxFileMiB = kMaxInputFileBytes >> 20;
     bool stats = false;
     TreeOutputs outputs;
     TubeMeshParams mesh;  // flags; applied over the config's "mesh" object when given
@@ -88,9 +90,11 @@ void checkPointCount(std::size_t count, std::size_t limit, const char* what) {
 }
 
 void run(ColonizeOptions& o) {
-    ColonizeConfig config = loadColonizeConfig(o.config);
+    const std::size_t maxFileBytes = o.maxFileMiB << 20;
+    ColonizeConfig config = loadColonizeConfig(o.config, maxFileBytes);
     if (!o.seed.empty()) config.seed = parseSeed(o.seed.front());
     config.params.maxNodes = o.maxNodes;
+    checkIterationLimit(config, o.maxIterations, o.config);
     std::size_t requested = 0;
     for (const Envelope& e : config.envelopes) requested += e.pointCount;
     checkPointCount(requested, o.maxPoints, "the envelopes ask for");
@@ -105,7 +109,7 @@ void run(ColonizeOptions& o) {
     std::vector<Vec3> points = configAttractionPoints(config);
     if (!o.points.empty()) {
         const std::vector<Vec3> extra =
-            removePointsInside(readPointsFile(o.points), config.obstacles);
+            removePointsInside(readPointsFile(o.points, maxFileBytes), config.obstacles);
         points.insert(points.end(), extra.begin(), extra.end());
     }
     checkPointCount(points.size(), o.maxPoints, "the config and --points give");
@@ -156,6 +160,14 @@ void addColonizeCommand(CLI::App& app) {
     cmd->add_option("--max-nodes", options->maxNodes,
                     "stop with an error when the trees would grow more nodes")
         ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--max-iterations", options->maxIterations,
+                    "stop with an error when the config's max_iterations is above this")
+        ->check(CLI::Range(1, 100'000'000))
+        ->capture_default_str();
+    cmd->add_option("--max-file-size", options->maxFileMiB,
+                    "largest config, point or mesh file to read, in MiB")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20))
         ->capture_default_str();
     cmd->add_flag("--stats", options->stats, "print statistics as one JSON object");
     addTreeOutputOptions(*cmd, options->outputs);

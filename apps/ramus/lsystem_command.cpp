@@ -1,4 +1,5 @@
 // `ramus lsystem FILE.lsys …`: derive, interpret, mesh, write.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -21,7 +22,8 @@ struct LsystemOptions {
     int derivations = -1;
     std::vector<std::string> seed;  // 0 or 1 value; a vector tells "absent" from "0"
     std::vector<std::string> sets;
-    std::size_t maxModules = 50'000'000;
+    std::size_t maxModules = DeriveOptions{}.maxModules;
+    std::size_t maxMemoryMiB = DeriveOptions{}.maxMemoryBytes >> 20;
     std::string tropismMode;
     bool print = false;
     bool stats = false;
@@ -30,7 +32,7 @@ struct LsystemOptions {
     AssetOptions assets;
 };
 
-// "NAME=VALUE" → pair; the value must be a plain number.
+// "NAME=VALUE" → pair; the value must be a plain, finite number.
 std::pair<std::string, double> parseSetting(const std::string& text) {
     const std::size_t eq = text.find('=');
     std::size_t used = 0;
@@ -38,12 +40,18 @@ std::pair<std::string, double> parseSetting(const std::string& text) {
     if (eq != std::string::npos && eq > 0) {
         try {
             value = std::stod(text.substr(eq + 1), &used);
+        } catch (const std::out_of_range&) {
+            throw Error("--set: the value of '" + text +
+                        "' is outside the range of a double; expected a finite number");
         } catch (const std::exception&) {
             used = 0;
         }
     }
     if (eq == std::string::npos || eq == 0 || used == 0 || used != text.size() - eq - 1) {
         throw Error("--set: invalid setting '" + text + "'; expected NAME=NUMBER, e.g. a=30");
+    }
+    if (!std::isfinite(value)) {
+        throw Error("--set: the value of '" + text + "' is not finite; expected a finite number");
     }
     return {text.substr(0, eq), value};
 }
@@ -68,6 +76,7 @@ void run(LsystemOptions& o) {
     DeriveOptions deriveOptions;
     deriveOptions.derivations = o.derivations;
     deriveOptions.maxModules = o.maxModules;
+    deriveOptions.maxMemoryBytes = o.maxMemoryMiB << 20;
     if (!o.seed.empty()) {
         deriveOptions.overrideSeed = true;
         deriveOptions.seed = parseSeed(o.seed.front());
@@ -120,6 +129,11 @@ void addLsystemCommand(CLI::App& app) {
     cmd->add_option("--max-modules", options->maxModules,
                     "stop with an error when a derived word would exceed this many modules")
         ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--max-memory", options->maxMemoryMiB,
+                    "stop with an error when a derivation step's words would need more than "
+                    "this many MiB (modules and their parameters)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20))
         ->capture_default_str();
     cmd->add_option("--tropism-mode", options->tropismMode,
                     "rotate (ABOP, bending accumulates) or blend (seed 002 eq 2.18)")

@@ -1,10 +1,12 @@
 // `ramus pca report|sample`: the skeleton statistics' figures and plots, and random feature
 // points (optionally conditioned) for exploring the model.
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "ramus/error.hpp"
 #include "ramus/skeleton_stats.hpp"
@@ -125,6 +127,10 @@ Condition parseCondition(const std::string& text, double jitter) {
                     "'; expected FEATURE=VALUE in the feature's unit, e.g. legs=1, wings=0, "
                     "neck_y_length=150, tail_x_length=300, weight=50");
     }
+    if (!std::isfinite(value)) {
+        throw Error("--condition: the value of '" + text +
+                    "' is not finite; expected a finite number");
+    }
     return Condition{*feature, value, jitter};
 }
 
@@ -195,7 +201,7 @@ void addPcaCommand(CLI::App& app) {
     sample
         ->add_option("--jitter", o->jitter,
                      "width of the uniform offset added to each condition (thesis: 1)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"))
         ->capture_default_str();
     sample->add_option("--example", o->example, "the feature point of a species (by name)");
     sample->add_flag("--vary", o->vary, "with --example: variations N(q_i, lambda_i/2)");

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "ramus/bones.hpp"
 #include "ramus/error.hpp"
@@ -33,6 +34,7 @@ struct SkeletonOptions {
     std::string species;
     bool variations = false;
     int count = 1;
+    int maxCount = kDefaultMaxSkeletons;
     std::string name = "skeleton";
     std::string resolution = "box";
     std::string bones;  // user bone library directory; empty = the default library
@@ -101,6 +103,11 @@ void printProgress(int done, int total) {
 
 void checkOptions(const SkeletonOptions& o) {
     if (o.count < 1) throw Error("--count: expected at least 1, got " + std::to_string(o.count));
+    if (o.count > o.maxCount) {
+        throw Error("--count: " + std::to_string(o.count) + " skeletons are above the limit of " +
+                    std::to_string(o.maxCount) +
+                    "; expected fewer, or raise the limit with --max-count (or use ramus batch)");
+    }
     if (o.variations && o.load.empty() && o.example.empty()) {
         throw Error("--variations: needs a skeleton to vary; give --load FILE.json or --example");
     }
@@ -148,15 +155,24 @@ void addInputOptions(CLI::App& cmd, SkeletonOptions& o) {
     cmd.add_option("--wings", o.wings, "wings (even)")->expected(1);
     cmd.add_option("--arms", o.arms, "arms (even)")->expected(1);
     cmd.add_option("--fins", o.fins, "fins (even)")->expected(1);
-    cmd.add_option("--neck-y", o.neckY, "neck y length in px of the 1000 px frame")->expected(1);
-    cmd.add_option("--tail-x", o.tailX, "tail x length in px of the 1000 px frame")->expected(1);
+    // The same ranges as the studio's and the batch manifests' inputs (skeleton_plan.cpp).
+    cmd.add_option("--neck-y", o.neckY, "neck y length in px of the 1000 px frame")
+        ->expected(1)
+        ->check(finiteIn(-kMaxFrameLength, kMaxFrameLength));
+    cmd.add_option("--tail-x", o.tailX, "tail x length in px of the 1000 px frame")
+        ->expected(1)
+        ->check(finiteIn(-kMaxFrameLength, kMaxFrameLength));
     cmd.add_flag("--two-per-girdle", o.twoPerGirdle, "allow two limb pairs per girdle (G')");
     cmd.add_option("--neck-shoulder", o.neckShoulder, "second shoulder girdle on the neck (G'')")
         ->check(CLI::IsMember({"allowed", "forced", "forbidden"}));
     cmd.add_option("--head", o.head, "skull kind of the bone library");
     cmd.add_option("--example", o.example, "construct from this species (English or German)");
-    cmd.add_option("--height", o.height, "scale to this standing height in metres")->expected(1);
-    cmd.add_option("--length", o.length, "scale to this body length in metres")->expected(1);
+    cmd.add_option("--height", o.height, "scale to this standing height in metres")
+        ->expected(1)
+        ->check(finiteIn(kMinBodyMetres, kMaxBodyMetres));
+    cmd.add_option("--length", o.length, "scale to this body length in metres")
+        ->expected(1)
+        ->check(finiteIn(kMinBodyMetres, kMaxBodyMetres));
     cmd.add_option("--spacing", o.spacing, "vertebra spacing along the spine curves")
         ->check(CLI::IsMember({"arc_length", "parameter"}));
     cmd.add_option("--spread", o.spread,
@@ -175,6 +191,10 @@ void addSkeletonCommand(CLI::App& app) {
     cmd->add_option("--load", o->load, "regenerate (or vary) a saved skeleton (.json)");
     cmd->add_flag("--variations", o->variations, "make variations of --load or --example");
     cmd->add_option("--count", o->count, "number of skeletons");
+    cmd->add_option("--max-count", o->maxCount,
+                    "stop with an error when --count asks for more skeletons")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->add_option("--name", o->name, "file name stem; files are NAME<i>.glb/.obj/.json");
     cmd->add_option("--resolution", o->resolution,
                     "bone meshes: box, low or high (the default bone library)")

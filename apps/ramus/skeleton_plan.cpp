@@ -61,10 +61,10 @@ SkeletonInputs inputsFrom(const nlohmann::json& r) {
     in.wings = limbCount(r, "wings", 8);
     in.arms = limbCount(r, "arms", 8);
     in.fins = limbCount(r, "fins", 8);
-    in.neckYLength = optionalNumber(r, "neck_y", -2000.0, 2000.0);
-    in.tailXLength = optionalNumber(r, "tail_x", -2000.0, 2000.0);
-    in.heightMetres = optionalNumber(r, "height_m", 1e-3, 1e3);
-    in.lengthMetres = optionalNumber(r, "length_m", 1e-3, 1e3);
+    in.neckYLength = optionalNumber(r, "neck_y", -kMaxFrameLength, kMaxFrameLength);
+    in.tailXLength = optionalNumber(r, "tail_x", -kMaxFrameLength, kMaxFrameLength);
+    in.heightMetres = optionalNumber(r, "height_m", kMinBodyMetres, kMaxBodyMetres);
+    in.lengthMetres = optionalNumber(r, "length_m", kMinBodyMetres, kMaxBodyMetres);
     if (const auto* v = optionalMember(r, "two_per_girdle", Type::boolean)) {
         in.twoPerGirdle = v->get<bool>();
     }

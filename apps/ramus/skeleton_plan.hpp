@@ -14,6 +14,15 @@
 
 namespace ramus::cli {
 
+/// Bounds of the numeric skeleton inputs wherever they come from (flags, studio, batches):
+/// neck and tail lengths in px of the 1000 px frame, body height and length in metres.
+inline constexpr double kMaxFrameLength = 2000.0;
+inline constexpr double kMinBodyMetres = 1e-3;
+inline constexpr double kMaxBodyMetres = 1e3;
+
+/// Default of `ramus skeleton --max-count` (more skeletons belong in a batch manifest).
+inline constexpr int kDefaultMaxSkeletons = 10'000;
+
 /// What to make: `count` skeletons named `name`0, `name`1, …
 struct SkeletonPlanRequest {
     SkeletonInputs inputs;

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "ramus/error.hpp"
 #include "ramus/file_util.hpp"
@@ -149,10 +150,15 @@ void addSpeciesCommand(CLI::App& app) {
     import->add_option("--name-de", o->nameDe, "German name")->expected(1);
     import->add_option("--class", o->animalClass, "fish, amphibian, reptile, bird or mammal")
         ->expected(1);
-    import->add_option("--wings", o->wings, "wing pairs (0 or 1)")->expected(1);
+    import->add_option("--wings", o->wings, "wing pairs (0 or 1)")
+        ->expected(1)
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"));
     import->add_option("--legs", o->legs, "pairs of legs with ground contact (0, 1, 2)")
-        ->expected(1);
-    import->add_option("--weight", o->weight, "body weight in kg")->expected(1);
+        ->expected(1)
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"));
+    import->add_option("--weight", o->weight, "body weight in kg")
+        ->expected(1)
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"));
     import->callback([o] { runImport(*o);
 });
 

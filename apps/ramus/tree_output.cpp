@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cli_checks.hpp"
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
@@ -11,6 +12,15 @@
 #include "ramus/tree_textures.hpp"
 
 namespace ramus::cli {
+
+void checkIterationLimit(const ColonizeConfig& config, int limit, const std::string& configName) {
+    if (config.params.maxIterations > limit) {
+        throw Error(configName +
+                    ": max_iterations: " + std::to_string(config.params.maxIterations) +
+                    " is above the limit of " + std::to_string(limit) +
+                    " iterations; expected fewer, or a larger --max-iterations");
+    }
+}
 
 void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs) {
     command.add_option("-o,--output", outputs.model, "write the model: OUT.glb or OUT.obj");
@@ -21,37 +31,18 @@ void addTreeOutputOptions(CLI::App& command, TreeOutputs& outputs) {
     command.add_option("--size", outputs.size, "preview size WxH")->capture_default_str();
 }
 
-namespace {
-
-/// A finite number above `lo` (or equal to it when `allowLo`) and below `hi`. CLI11's own
-/// range checks let NaN through (it compares false) and print infinities badly.
-CLI::Validator finiteNumber(double lo, bool allowLo, double hi, const std::string& expected) {
-    return CLI::Validator(
-        [=](std::string& text) {
-            double value = 0.0;
-            const bool ok = CLI::detail::lexical_cast(text, value) && std::isfinite(value) &&
-                            (value > lo || (allowLo && value == lo)) && value < hi;
-            return ok ? std::string() : "expected " + expected + ", got " + text;
-        },
-        expected);
-}
-
-const double kHuge = 1e300;
-
-}  // namespace
-
 void addTubeMeshOptions(CLI::App& command, TubeMeshParams& params) {
     command
         .add_option("--leaf-radius", params.leafRadius,
                     "tip radius r0 for Murray's rule, model units (0 = 4% of mean edge)")
-        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"));
     command.add_option("--radius-exponent", params.radiusExponent, "Murray exponent g (> 0)")
-        ->check(finiteNumber(0.0, false, kHuge, "a finite number > 0"))
+        ->check(finiteNumber(0.0, false, kHugeNumber, "a finite number > 0"))
         ->capture_default_str();
     command
         .add_option("--trunk-multiplier", params.trunkMultiplier,
                     "root ring radius = multiplier x root edge radius")
-        ->check(finiteNumber(0.0, false, kHuge, "a finite number > 0"))
+        ->check(finiteNumber(0.0, false, kHugeNumber, "a finite number > 0"))
         ->capture_default_str();
     command.add_option("--min-segments", params.minSegments, "ring vertices, thinnest branches")
         ->check(CLI::Range(3, 256))

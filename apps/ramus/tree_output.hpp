@@ -30,6 +30,12 @@ struct TreeOutputs {
     bool any() const { return !model.empty() || !treeJson.empty() || !png.empty(); }
 };
 
+/// Default of `ramus colonize --max-iterations`, also the limit of batch colonize jobs.
+inline constexpr int kDefaultMaxIterations = 100'000;
+
+/// Error naming `configName` and the limit when the config's max_iterations is above `limit`.
+void checkIterationLimit(const ColonizeConfig& config, int limit, const std::string& configName);
+
 /// A grown tree's meshes: the full mesh, or levels of detail.
 struct TreeModel {
     Mesh mesh;                  ///< full detail (LOD 0 when there are LODs); previews draw it

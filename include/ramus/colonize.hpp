@@ -107,6 +107,9 @@ struct ColonizeConfig {
     bool reduceBranchAngles = false;  ///< apply reduceBranchAngles after growth
     double curveReduction = 0.0;      ///< max_K in (0, 1) for reduceCurves; 0 = off
     std::string pointsFile;           ///< extra attraction points (path relative to the config)
+    /// Size limit (bytes) of the files the config names: its mesh shapes' files (read while
+    /// parsing) and pointsFile (read by configAttractionPoints).
+    std::size_t maxFileBytes = kMaxInputFileBytes;
 
     /// Tube mesher settings from the "mesh" object; only the keys present are set.
     struct MeshOverrides {
@@ -142,11 +145,15 @@ void applyMeshOverrides(const ColonizeConfig& config, TubeMeshParams& params);
 /// "FILE: KEY.PATH: what; expected …, got …" (e.g. "tree.json: envelopes[2].radius: …").
 /// Unknown keys are errors (they are usually typos). The files of "mesh" shapes are read here
 /// (readMeshVolume), relative to the folder of `fileName`; their errors are reported under the
-/// shape's "file" key.
-ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::string& fileName);
+/// shape's "file" key. Files larger than `maxFileBytes` are errors (readFile); the limit is
+/// kept in ColonizeConfig::maxFileBytes for the points file.
+ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::string& fileName,
+                                   std::size_t maxFileBytes = kMaxInputFileBytes);
 
-/// Reads and parses a config file; pointsFile is resolved relative to the file's folder.
-ColonizeConfig loadColonizeConfig(const std::string& path);
+/// Reads and parses a config file (at most `maxFileBytes`, like the files it names); pointsFile
+/// is resolved relative to the file's folder.
+ColonizeConfig loadColonizeConfig(const std::string& path,
+                                  std::size_t maxFileBytes = kMaxInputFileBytes);
 
 /// The config's attraction points: its envelopes sampled with `seed`, plus its points file,
 /// minus points inside obstacles.

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ramus/file_util.hpp"
 #include "ramus/math.hpp"
 
 namespace ramus {
@@ -109,8 +110,10 @@ std::vector<Vec3> removePointsInside(std::span<const Vec3> points,
 /// `.xyz`/`.txt` — "x y z" per line (more columns ignored; '#' comments, blank lines skipped);
 /// `.csv` — "x,y,z" per line, an optional non-numeric header line;
 /// `.ply` — ASCII PLY with a vertex element having float/double properties x, y, z.
-/// Throws Error "file:line: what; expected …" on malformed input or non-finite values.
-std::vector<Vec3> readPointsFile(const std::string& path);
+/// Throws Error "file:line: what; expected …" on malformed input or non-finite values, and
+/// when the file has more than `maxBytes` bytes (readFile).
+std::vector<Vec3> readPointsFile(const std::string& path,
+                                 std::size_t maxBytes = kMaxInputFileBytes);
 
 /// Parses point text as readPointsFile does; `format` is "xyz", "csv" or "ply"; `fileName` is
 /// used in error messages only.

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "ramus/file_util.hpp"
 #include "ramus/scene.hpp"
 
 namespace ramus {
@@ -26,7 +27,8 @@ void writeObj(const Scene& scene, const std::string& path);
 void writeScene(const Scene& scene, const std::string& path);
 
 /// Reads a GLB or glTF file into a Scene (meshes with positions/normals/indices and the node
-/// hierarchy). Throws Error naming the file on malformed input.
-Scene readGltf(const std::string& path);
+/// hierarchy). Throws Error naming the file on malformed input (numbers beyond double range in
+/// the JSON included), non-finite vertex data, and files of more than `maxBytes` bytes.
+Scene readGltf(const std::string& path, std::size_t maxBytes = kMaxInputFileBytes);
 
 }  // namespace ramus

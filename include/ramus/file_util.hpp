@@ -2,14 +2,22 @@
 // atomic writes (temp file in the same directory, then rename) so no partial file is left.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace ramus {
 
-/// Reads a whole file. Throws Error("PATH: cannot read file: <reason>") on failure.
-std::string readFile(const std::string& path);
+/// Default size limit of every input file ramus reads (1 GiB): a file given by mistake (a
+/// disk image, /dev/zero) fails at once instead of exhausting memory. Commands that read large
+/// inputs (point and mesh files) have a flag to change it (docs/cli.md, "Limits").
+inline constexpr std::size_t kMaxInputFileBytes = std::size_t{1} << 30;
+
+/// Reads a whole file of at most `maxBytes` bytes. Throws Error("PATH: cannot read file:
+/// <reason>") on failure and Error("PATH: the file is larger than the input limit of N bytes;
+/// …") past the limit.
+std::string readFile(const std::string& path, std::size_t maxBytes = kMaxInputFileBytes);
 
 /// Writes `bytes` to `path` atomically: writes "<path>.tmp-<random>" next to it, flushes, then
 /// renames over `path`. On any failure the temp file is removed and Error is thrown; an

@@ -92,11 +92,21 @@ struct DeriveOptions {
     /// Stop with Error when a word would exceed it. Parameter values are limited to 4 × this,
     /// and a word to 2^32 − 2 modules whatever is set here.
     std::size_t maxModules = 50'000'000;
+    /// Memory budget (bytes) of the two words a derivation step holds — the current one and
+    /// the one being written, kModuleBytes per module plus kParamBytes per parameter value —
+    /// counted from the words' actual contents. Stop with Error when a step would need more
+    /// (parameters can make a word large while it is still under maxModules).
+    std::size_t maxMemoryBytes = std::size_t{4} << 30;
 };
 
+/// Bytes a derived word stores per module and per parameter value (what maxMemoryBytes counts).
+inline constexpr std::size_t kModuleBytes = sizeof(Module);
+inline constexpr std::size_t kParamBytes = sizeof(double);
+
 /// Derives the word after n parallel rewriting steps (0 steps = the axiom). Deterministic for
-/// a given system, options and seed. Throws Error on the module limit, and on division by zero
-/// or a non-finite value, naming the rule (file:line:col of the production).
+/// a given system, options and seed. Throws Error on the module or memory limit (naming the
+/// file, the step and the limit), and on division by zero or a non-finite value, naming the
+/// rule (file:line:col of the production).
 ModuleString deriveLSystem(const LSystem& system, const DeriveOptions& options = {});
 
 /// Writes a word in file notation, e.g. "F(50)[&(36)F(50)A]": parameters printed with up to

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ramus/file_util.hpp"
 #include "ramus/math.hpp"
 
 namespace ramus {
@@ -64,8 +65,8 @@ private:
 /// references and other statements are ignored), `.glb`/`.gltf` (every mesh of the scene,
 /// placed by its node's world transform; meshes without nodes as they are). Throws Error
 /// naming the file (and line for OBJ) when it cannot be read or parsed, or is not a closed
-/// mesh (see MeshVolume).
-MeshVolume readMeshVolume(const std::string& path);
+/// mesh (see MeshVolume), or has more than `maxBytes` bytes (readFile).
+MeshVolume readMeshVolume(const std::string& path, std::size_t maxBytes = kMaxInputFileBytes);
 
 /// Parses Wavefront OBJ text into a MeshVolume; `fileName` is used in error messages only.
 MeshVolume parseObjVolume(const std::string& text, const std::string& fileName);

@@ -64,8 +64,8 @@ std::set<std::string> shapeSizeKeys(ShapeKind kind) {
 // Reads the closed meshes of "mesh" shapes, each file once, relative to the config's folder.
 class MeshFiles {
 public:
-    explicit MeshFiles(const std::string& configFile)
-        : folder_(std::filesystem::path(configFile).parent_path()) {}
+    MeshFiles(const std::string& configFile, std::size_t maxBytes)
+        : folder_(std::filesystem::path(configFile).parent_path()), maxBytes_(maxBytes) {}
 
     std::shared_ptr<const MeshVolume> load(const ConfigReader& r, const Json& value,
                                            const std::string& path) {
@@ -78,7 +78,7 @@ public:
         auto it = loaded_.find(key);
         if (it != loaded_.end()) return it->second;
         try {
-            auto mesh = std::make_shared<const MeshVolume>(readMeshVolume(key));
+            auto mesh = std::make_shared<const MeshVolume>(readMeshVolume(key, maxBytes_));
             return loaded_.emplace(key, std::move(mesh)).first->second;
         } catch (const Error& e) {
             r.fail(path, e.what());
@@ -87,6 +87,7 @@ public:
 
 private:
     std::filesystem::path folder_;
+    std::size_t maxBytes_;
     std::map<std::string, std::shared_ptr<const MeshVolume>> loaded_;
 };
 
@@ -298,7 +299,8 @@ void parseShapeLists(const ConfigReader& r, const Json& j, ColonizeConfig& c, Me
 
 }  // namespace
 
-ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::string& fileName) {
+ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::string& fileName,
+                                   std::size_t maxFileBytes) {
     const Json j = detail::parseJsonText(jsonText, fileName);
     const ConfigReader r(fileName);
     if (!j.is_object()) throw Error(fileName + ": expected a JSON object at the top level");
@@ -327,6 +329,7 @@ ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::strin
                  "root_growth"},
                 "");
     ColonizeConfig c;
+    c.maxFileBytes = maxFileBytes;
     if (j.contains("description") && !j["description"].is_string()) {
         r.fail("description", "expected a string, got " + j["description"].dump());
     }
@@ -339,7 +342,7 @@ ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::strin
         c.curveReduction = r.number(j["curve_reduction"], "curve_reduction", 0.0, 0.999999, false,
                                     "max_K, dot product of unit edge directions; 0 = off");
     }
-    MeshFiles meshes(fileName);
+    MeshFiles meshes(fileName, maxFileBytes);
     parseShapeLists(r, j, c, meshes);
     if (j.contains("points_file")) {
         if (!j["points_file"].is_string() || j["points_file"].get<std::string>().empty()) {
@@ -354,8 +357,8 @@ ColonizeConfig parseColonizeConfig(const std::string& jsonText, const std::strin
     return c;
 }
 
-ColonizeConfig loadColonizeConfig(const std::string& path) {
-    ColonizeConfig config = parseColonizeConfig(readFile(path), path);
+ColonizeConfig loadColonizeConfig(const std::string& path, std::size_t maxFileBytes) {
+    ColonizeConfig config = parseColonizeConfig(readFile(path, maxFileBytes), path, maxFileBytes);
     if (!config.pointsFile.empty()) {
         const std::filesystem::path file(config.pointsFile);
         if (file.is_relative()) {
@@ -368,7 +371,7 @@ ColonizeConfig loadColonizeConfig(const std::string& path) {
 std::vector<Vec3> configAttractionPoints(const ColonizeConfig& config) {
     std::vector<Vec3> points = sampleAttractionPoints(config.envelopes, {}, config.seed);
     if (!config.pointsFile.empty()) {
-        const std::vector<Vec3> extra = readPointsFile(config.pointsFile);
+        const std::vector<Vec3> extra = readPointsFile(config.pointsFile, config.maxFileBytes);
         points.insert(points.end(), extra.begin(), extra.end());
     }
     return removePointsInside(points, config.obstacles);

@@ -73,10 +73,10 @@ MeshVolume parseObjVolume(const std::string& text, const std::string& fileName) 
     }
 }
 
-MeshVolume readMeshVolume(const std::string& path) {
+MeshVolume readMeshVolume(const std::string& path, std::size_t maxBytes) {
     const std::string ext = lowerExtension(path);
-    if (ext == ".obj") return parseObjVolume(readFile(path), path);
-    if (ext == ".glb" || ext == ".gltf") return sceneVolume(readGltf(path), path);
+    if (ext == ".obj") return parseObjVolume(readFile(path, maxBytes), path);
+    if (ext == ".glb" || ext == ".gltf") return sceneVolume(readGltf(path, maxBytes), path);
     throw Error(path + ": unknown mesh file extension '" + ext + "'; expected .obj, .glb or .gltf");
 }
 

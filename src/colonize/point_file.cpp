@@ -53,9 +53,11 @@ std::vector<std::string_view> split(std::string_view s, std::string_view separat
     return fields;
 }
 
-bool parseNumber(std::string_view s, double& value) {
+// A whole field as a double; `ec` tells a number beyond double range (1e999) from no number.
+bool parseNumber(std::string_view s, double& value, std::errc* ec = nullptr) {
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
     const auto result = std::from_chars(s.data(), s.data() + s.size(), value);
+    if (ec) *ec = result.ec;
     return result.ec == std::errc() && result.ptr == s.data() + s.size();
 }
 
@@ -69,8 +71,13 @@ Vec3 readXyz(const std::vector<std::string_view>& fields, const int index[3],
     Vec3 p;
     for (int k = 0; k < 3; ++k) {
         const std::string_view field = fields[static_cast<std::size_t>(index[k])];
-        if (!parseNumber(field, p[k])) {
-            fail(file, line, "invalid coordinate '" + std::string(field) + "'; expected a number");
+        std::errc ec{};
+        if (!parseNumber(field, p[k], &ec)) {
+            fail(file, line,
+                 ec == std::errc::result_out_of_range
+                     ? "coordinate '" + std::string(field) +
+                           "' is outside the range of a double; expected a finite number"
+                     : "invalid coordinate '" + std::string(field) + "'; expected a number");
         }
         if (!std::isfinite(p[k])) {
             fail(file, line, "coordinate '" + std::string(field) + "' is not finite");
@@ -106,6 +113,8 @@ std::vector<Vec3> parseXyzOrCsv(std::string_view text, bool csv, const std::stri
     return points;
 }
 
+constexpr double kMaxPlyVertices = 4294967295.0;
+
 struct PlyHeader {
     std::size_t vertexCount = 0;
     std::size_t propertyCount = 0;
@@ -137,8 +146,11 @@ PlyHeader readPlyHeader(LineReader& reader, const std::string& file) {
             if (inVertex) {
                 header.vertexFirst = !sawElement;
                 double count = 0;
-                if (!parseNumber(words[2], count) || count < 0 || count != std::floor(count)) {
-                    fail(file, reader.lineNumber, "invalid vertex count; expected an integer");
+                if (!parseNumber(words[2], count) || !(count >= 0) || count > kMaxPlyVertices ||
+                    count != std::floor(count)) {
+                    fail(file, reader.lineNumber,
+                         "invalid vertex count '" + std::string(words[2]) +
+                             "'; expected an integer from 0 to 4294967295");
                 }
                 header.vertexCount = static_cast<std::size_t>(count);
             }
@@ -149,7 +161,7 @@ PlyHeader readPlyHeader(LineReader& reader, const std::string& file) {
             }
             const std::string_view name = words.back();
             for (int k = 0; k < 3; ++k) {
-                if (name == std::string_view("xyz" + k, 1)) {
+                if (name == std::string_view("xyz").substr(static_cast<std::size_t>(k), 1)) {
                     header.xyz[k] = static_cast<int>(header.propertyCount);
                 }
             }
@@ -166,7 +178,10 @@ std::vector<Vec3> parsePly(std::string_view text, const std::string& file) {
         fail(file, reader.lineNumber, "the vertex element must be the first PLY element");
     }
     std::vector<Vec3> points;
-    points.reserve(header.vertexCount);
+    // The header's count is not trusted for the reservation: a vertex line takes at least
+    // 6 bytes ("0 0 0\n"), so the rest of the text bounds how many can follow.
+    const std::size_t rest = text.size() - std::min(reader.pos, text.size());
+    points.reserve(std::min(header.vertexCount, rest / 6));
     std::string_view line;
     while (points.size() < header.vertexCount) {
         if (!reader.next(line)) {
@@ -207,14 +222,14 @@ std::vector<Vec3> parsePoints(const std::string& text, const std::string& format
     throw Error(fileName + ": unknown point format '" + format + "'; expected xyz, csv or ply");
 }
 
-std::vector<Vec3> readPointsFile(const std::string& path) {
+std::vector<Vec3> readPointsFile(const std::string& path, std::size_t maxBytes) {
     std::string ext = lowerExtension(path);
     if (ext == "txt") ext = "xyz";
     if (ext != "xyz" && ext != "csv" && ext != "ply") {
         throw Error(path + ": unsupported point file extension '." + ext +
                     "'; expected .xyz, .txt, .csv or .ply");
     }
-    return parsePoints(readFile(path), ext, path);
+    return parsePoints(readFile(path, maxBytes), ext, path);
 }
 
 }  // namespace ramus

@@ -12,22 +12,36 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 #include "ramus/error.hpp"
 
 namespace ramus {
 
-std::string readFile(const std::string& path) {
+std::string readFile(const std::string& path, std::size_t maxBytes) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw Error(path + ": cannot read file: it is a directory");
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path + ": cannot read file: " + std::strerror(errno));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
+    // Read in chunks rather than by the file's size: pipes and special files have none, and a
+    // file may grow while it is read; the limit is checked on what actually arrives.
+    std::string bytes;
+    std::vector<char> chunk(std::size_t{1} << 20);
+    while (in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (bytes.size() + got > maxBytes) {
+            throw Error(path + ": the file is larger than the input limit of " +
+                        std::to_string(maxBytes) +
+                        " bytes; expected a smaller file (ramus colonize raises the limit for "
+                        "configs, point and mesh files with --max-file-size MIB)");
+        }
+        bytes.append(chunk.data(), got);
+    }
     if (in.bad()) throw Error(path + ": cannot read file: read error");
-    return std::move(buffer).str();
+    return bytes;
 }
 
 void writeFileAtomic(const std::string& path, std::string_view bytes) {

@@ -276,8 +276,8 @@ void convertNodes(const Reader& r, Scene& scene) {
     }
 }
 
-Model loadModel(const std::string& path) {
-    const std::string bytes = readFile(path);
+Model loadModel(const std::string& path, std::size_t maxBytes) {
+    const std::string bytes = readFile(path, maxBytes);
     if (bytes.size() > std::numeric_limits<unsigned int>::max())
         throw Error(path + ": cannot read glTF: file is larger than 4 GiB");
     tinygltf::TinyGLTF loader;
@@ -303,8 +303,8 @@ Model loadModel(const std::string& path) {
 
 }  // namespace
 
-Scene readGltf(const std::string& path) {
-    const Model model = loadModel(path);
+Scene readGltf(const std::string& path, std::size_t maxBytes) {
+    const Model model = loadModel(path, maxBytes);
     const Reader r{model, path};
     Scene scene;
     for (const tinygltf::Mesh& m : model.meshes) scene.meshes.push_back(MeshBuilder(r).build(m));

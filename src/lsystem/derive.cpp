@@ -28,6 +28,11 @@ constexpr std::size_t kParamsPerModuleLimit = 4;
 /// Largest word size: indices are 32 bits and 0xFFFFFFFF means "none" in context tables.
 constexpr std::size_t kMaxIndex = 0xFFFFFFFEu;
 
+/// Bytes a word's contents take (what DeriveOptions::maxMemoryBytes counts).
+std::size_t wordBytes(std::size_t modules, std::size_t params) {
+    return modules * kModuleBytes + params * kParamBytes;
+}
+
 /// Reserves room for `count` elements; for large words asks the kernel for transparent huge
 /// pages. Most of a derivation's time otherwise goes into first-touch page faults of the
 /// freshly allocated output (one per 4 KiB); it is only a hint and harmless if refused.
@@ -61,6 +66,7 @@ public:
           maxModules_(std::min<std::size_t>(options.maxModules, kMaxIndex)),
           maxParams_(std::min<std::size_t>(maxModules_, kMaxIndex / kParamsPerModuleLimit) *
                      kParamsPerModuleLimit),
+          maxMemory_(options.maxMemoryBytes),
           steps_(options.derivations < 0 ? system.settings.derivations : options.derivations) {
         if (options.derivations < -1) {
             throw Error(SourceLoc{system.fileName, 0, 0},
@@ -75,17 +81,24 @@ public:
         if (current.modules.size() > maxModules_ || current.params.size() > maxParams_) {
             failLimit();
         }
+        if (wordBytes(current.modules.size(), current.params.size()) > maxMemory_) {
+            failMemory(current.modules.size(), current.params.size(), 0, 0);
+        }
         ModuleString next;
         double growth = 2.0;
         for (step_ = 1; step_ <= steps_; ++step_) {
             // Reserve by the last step's growth; capacity is kept between steps.
             // Over-estimating costs only address space: untouched pages are never mapped.
+            // Never more than the limits allow, so a reservation cannot fail on its own.
+            const double left = static_cast<double>(
+                maxMemory_ - wordBytes(current.modules.size(), current.params.size()));
             double estimate = static_cast<double>(current.modules.size()) * growth * 1.5 + 64.0;
-            reserveWord(next.modules, static_cast<std::size_t>(
-                                          std::min(estimate, static_cast<double>(maxModules_))));
+            estimate = std::min({estimate, static_cast<double>(maxModules_), left / kModuleBytes});
+            reserveWord(next.modules, static_cast<std::size_t>(estimate));
             double paramEstimate = static_cast<double>(current.params.size()) * growth * 1.5;
-            reserveWord(next.params, static_cast<std::size_t>(
-                                         std::min(paramEstimate, static_cast<double>(maxParams_))));
+            paramEstimate =
+                std::min({paramEstimate, static_cast<double>(maxParams_), left / kParamBytes});
+            reserveWord(next.params, static_cast<std::size_t>(paramEstimate));
             rewrite(current, next);
             growth = std::clamp(
                 static_cast<double>(next.modules.size()) /
@@ -106,14 +119,17 @@ private:
     double evalExpr(std::int32_t expr);
     [[noreturn]] void failEval(std::int32_t expr, detail::EvalStatus status) const;
     [[noreturn]] void failLimit() const;
+    [[noreturn]] void failMemory(std::size_t inModules, std::size_t inParams,
+                                 std::size_t outModules, std::size_t outParams) const;
 
+    // Room: how far `out` may grow before grow() must look at the capacity and the limits.
     void ensureRoom(ModuleString& out, std::size_t modules, std::size_t params) {
-        if (out.modules.size() + modules > out.modules.capacity() ||
-            out.params.size() + params > out.params.capacity()) {
+        if (out.modules.size() + modules > moduleRoom_ || out.params.size() + params > paramRoom_) {
             grow(out, modules, params);
         }
     }
     void grow(ModuleString& out, std::size_t modules, std::size_t params);
+    void setRoom(const ModuleString& out);
 
     void copyModule(const ModuleString& in, const Module& m, ModuleString& out) {
         ensureRoom(out, 1, m.paramCount);
@@ -152,6 +168,9 @@ private:
     Rng rng_;
     std::size_t maxModules_;
     std::size_t maxParams_;
+    std::size_t maxMemory_;
+    std::size_t inModules_ = 0, inParams_ = 0;    ///< size of the word being rewritten
+    std::size_t moduleRoom_ = 0, paramRoom_ = 0;  ///< see ensureRoom
     int steps_;
     int step_ = 0;
     std::vector<double> slots_;
@@ -162,6 +181,9 @@ private:
 void Deriver::rewrite(const ModuleString& in, ModuleString& out) {
     out.modules.clear();
     out.params.clear();
+    inModules_ = in.modules.size();
+    inParams_ = in.params.size();
+    setRoom(out);
     if (rules_.hasLeftContext || rules_.hasRightContext) matcher_.build(in);
     const auto n = static_cast<std::uint32_t>(in.modules.size());
     const Module* mods = in.modules.data();
@@ -314,6 +336,9 @@ void Deriver::grow(ModuleString& out, std::size_t modules, std::size_t params) {
     std::size_t needModules = out.modules.size() + modules;
     std::size_t needParams = out.params.size() + params;
     if (needModules > maxModules_ || needParams > maxParams_) failLimit();
+    if (wordBytes(inModules_, inParams_) + wordBytes(needModules, needParams) > maxMemory_) {
+        failMemory(inModules_, inParams_, needModules, needParams);
+    }
     if (needModules > out.modules.capacity()) {
         std::size_t cap = std::max(needModules, out.modules.capacity() * 2);
         reserveWord(out.modules, std::min(cap, maxModules_));
@@ -322,6 +347,18 @@ void Deriver::grow(ModuleString& out, std::size_t modules, std::size_t params) {
         std::size_t cap = std::max(needParams, out.params.capacity() * 2);
         reserveWord(out.params, std::min(cap, maxParams_));
     }
+    setRoom(out);
+}
+
+// The memory left after both words' contents is split between modules and parameters, so any
+// sizes within the room keep the total under maxMemoryBytes; grow() re-splits what is left
+// once one of them fills up (a few dozen times per step at most: the room halves each time).
+void Deriver::setRoom(const ModuleString& out) {
+    const std::size_t used =
+        wordBytes(inModules_, inParams_) + wordBytes(out.modules.size(), out.params.size());
+    const std::size_t half = (maxMemory_ - std::min(used, maxMemory_)) / 2;
+    moduleRoom_ = std::min(out.modules.capacity(), out.modules.size() + half / kModuleBytes);
+    paramRoom_ = std::min(out.params.capacity(), out.params.size() + half / kParamBytes);
 }
 
 void Deriver::failLimit() const {
@@ -331,6 +368,22 @@ void Deriver::failLimit() const {
                     " modules (or " + std::to_string(maxParams_) +
                     " parameter values); expected fewer derivations, or raise the limit with "
                     "--max-modules (DeriveOptions::maxModules)");
+}
+
+void Deriver::failMemory(std::size_t inModules, std::size_t inParams, std::size_t outModules,
+                         std::size_t outParams) const {
+    const auto mib = [](std::size_t bytes) {
+        return std::to_string((bytes + (std::size_t{1} << 20) - 1) >> 20) + " MiB";
+    };
+    throw Error(SourceLoc{system_.fileName, 0, 0},
+                "derivation step " + std::to_string(step_) + " of " + std::to_string(steps_) +
+                    " would exceed the memory limit of " + mib(maxMemory_) + " (" +
+                    std::to_string(maxMemory_) +
+                    " bytes) for its words: " + std::to_string(inModules) + " modules with " +
+                    std::to_string(inParams) + " parameter values rewritten into at least " +
+                    std::to_string(outModules) + " modules with " + std::to_string(outParams) +
+                    " values; expected fewer derivations or parameters, or raise the limit "
+                    "with --max-memory (DeriveOptions::maxMemoryBytes)");
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ using nlohmann::json;
 /// `ramus serve --port 0` as a child process; the port comes from its first line of output.
 class StudioServer {
 public:
-    StudioServer() {
+    /// `limits`: more `serve` flags (the defaults of the shared server below are generous).
+    explicit StudioServer(const std::vector<std::string>& limits = {}) {
         int fds[2];
         if (pipe(fds) != 0) return;
         posix_spawn_file_actions_t actions;
@@ -43,6 +44,7 @@ public:
             bin,          "serve", "--port",  "0", "--root",        RAMUS_SOURCE_DIR,
             "--jobs",     "2",     "--queue", "2", "--max-modules", "200000",
             "--max-body", "100000"};
+        args.insert(args.end(), limits.begin(), limits.end());
         std::vector<char*> argv;
         for (std::string& a : args) argv.push_back(a.data());
         argv.push_back(nullptr);
@@ -77,8 +79,15 @@ StudioServer& server() {
     return instance;
 }
 
-httplib::Client client() {
-    httplib::Client c("127.0.0.1", server().port());
+/// A second server with tight limits, for the tests of each limit.
+StudioServer& tightServer() {
+    static StudioServer instance({"--max-memory", "1", "--max-nodes", "300", "--max-iterations",
+                                  "400", "--max-derivations", "12", "--max-skeletons", "3"});
+    return instance;
+}
+
+httplib::Client client(const StudioServer& to = server()) {
+    httplib::Client c("127.0.0.1", to.port());
     c.set_read_timeout(60, 0);
     return c;
 }
@@ -88,14 +97,16 @@ struct Reply {
     json body;
 };
 
-Reply post(const std::string& path, const std::string& body) {
-    auto c = client();
+Reply post(const std::string& path, const std::string& body, const StudioServer& to = server()) {
+    auto c = client(to);
     auto res = c.Post(path.c_str(), body, "application/json");
     if (!res) return {};
     return {res->status, json::parse(res->body, nullptr, false)};
 }
 
-Reply post(const std::string& path, const json& body) { return post(path, body.dump()); }
+Reply post(const std::string& path, const json& body, const StudioServer& to = server()) {
+    return post(path, body.dump(), to);
+}
 
 std::string decodeBase64(const std::string& text) {
     auto value = [](char ch) -> int {
@@ -273,6 +284,91 @@ TEST_F(Studio, UnknownRoutesGetAJson404) {
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 404);
     EXPECT_TRUE(json::parse(res->body).contains("error"));
+}
+
+}  // namespace
+}  // namespace ramus::testing
+
+namespace ramus::testing {
+namespace {
+
+std::string messageOf(const Reply& r) {
+    if (!r.body.is_object() || !r.body.contains("error")) return "(no error)";
+    return r.body["error"].value("message", "(no message)");
+}
+
+TEST(StudioLimits, AParametricWordStopsAtTheMemoryLimit) {
+    ASSERT_TRUE(tightServer().running());
+    // A(p0, …, p31) doubles each step: 12 + 32 · 8 = 268 bytes per module, so step k holds
+    // 268 · 3 · 2^(k−1) bytes: 823 296 at step 11, 1 646 592 (over 1 MiB) at step 12 — with
+    // only 4096 modules, far below the module limit of 200 000.
+    std::string params, values;
+    for (int i = 0; i < 32; ++i) {
+        params += (i ? ",p" : "p") + std::to_string(i);
+        values += (i ? ",1" : "1");
+    }
+    const std::string text =
+        "axiom: A(" + values + ")\nA(" + params + ") -> A(" + params + ") A(" + params + ")";
+    const Reply ok = post("/api/lsystem", json{{"text", text}, {"derivations", 11}}, tightServer());
+    EXPECT_EQ(ok.status, 200) << ok.body.dump().substr(0, 300);
+    const Reply r = post("/api/lsystem", json{{"text", text}, {"derivations", 12}}, tightServer());
+    ASSERT_EQ(r.status, 400) << r.body.dump();
+    EXPECT_NE(messageOf(r).find("input.lsys: derivation step 12 of 12 would exceed the memory "
+                                "limit of 1 MiB (1048576 bytes)"),
+              std::string::npos)
+        << messageOf(r);
+}
+
+TEST(StudioLimits, DerivationsAboveTheLimitAreRefused) {
+    ASSERT_TRUE(tightServer().running());
+    const Reply r =
+        post("/api/lsystem", json{{"text", "axiom: F"}, {"derivations", 13}}, tightServer());
+    ASSERT_EQ(r.status, 400) << r.body.dump();
+    EXPECT_NE(messageOf(r).find("derivations: expected an integer in [0, 12]"), std::string::npos)
+        << messageOf(r);
+}
+
+TEST(StudioLimits, ColonizationStopsAtTheNodeLimit) {
+    ASSERT_TRUE(tightServer().running());
+    // One point far away: the trunk grows one node per iteration towards it, 399 in all.
+    const json config = {
+        {"step", 1},
+        {"max_iterations", 399},
+        {"envelopes",
+         {{{"shape", "sphere"}, {"center", {0, 2000, 0}}, {"radius", 1}, {"points", 1}}}}};
+    const Reply r = post("/api/colonize", json{{"config", config}}, tightServer());
+    ASSERT_EQ(r.status, 413) << r.body.dump();
+    EXPECT_NE(messageOf(r).find("the studio allows at most 300 nodes"), std::string::npos)
+        << messageOf(r);
+}
+
+TEST(StudioLimits, IterationsAboveTheLimitAre413BeforeAnyGrowth) {
+    ASSERT_TRUE(tightServer().running());
+    const json config = {{"max_iterations", 401},
+                         {"envelopes", {{{"shape", "sphere"}, {"radius", 1}, {"points", 1}}}}};
+    const Reply r = post("/api/colonize", json{{"config", config}}, tightServer());
+    ASSERT_EQ(r.status, 413) << r.body.dump();
+    EXPECT_NE(messageOf(r).find("config.max_iterations: 401; the studio allows at most 400"),
+              std::string::npos)
+        << messageOf(r);
+}
+
+TEST(StudioLimits, SkeletonCountAboveTheLimitIsRefused) {
+    ASSERT_TRUE(tightServer().running());
+    const Reply r = post("/api/skeleton", json{{"count", 4}}, tightServer());
+    ASSERT_EQ(r.status, 400) << r.body.dump();
+    EXPECT_NE(messageOf(r).find("count: expected an integer in [1, 3]"), std::string::npos)
+        << messageOf(r);
+}
+
+TEST(StudioLimits, NonFiniteLimitFlagsAreUsageErrors) {
+    const std::filesystem::path dir = scratchDirectory("serve_nonfinite");
+    for (const char* value : {"nan", "inf", "0"}) {
+        const CommandResult r = runRamus(std::string("serve --port 0 --time-limit ") + value, dir);
+        EXPECT_EQ(r.exitCode, 2) << value;
+        EXPECT_NE(r.err.find("--time-limit: expected a number of seconds"), std::string::npos)
+            << r.err;
+    }
 }
 
 }  // namespace

@@ -252,3 +252,39 @@ TEST(ColonizeConfig, PointsFileIsResolvedNextToTheConfig) {
 
 }  // namespace
 }  // namespace ramus
+
+namespace ramus {
+namespace {
+
+TEST(ColonizeConfigNonFinite, ANumberBeyondDoubleRangeIsLocatedAtTheNumber) {
+    const std::string message = errorOf("{\n  \"step\": 1e999\n}");
+    EXPECT_NE(message.find("tree.json:2:"), std::string::npos) << message;
+    EXPECT_NE(message.find("number '1e999' is out of range"), std::string::npos) << message;
+}
+
+TEST(ColonizeConfigNonFinite, NanAndInfinityAreNotJson) {
+    for (const char* value : {"NaN", "Infinity", "-Infinity"}) {
+        const std::string message = errorOf(std::string("{\"step\":\n ") + value + "}");
+        EXPECT_NE(message.find("tree.json:2:"), std::string::npos) << message;
+    }
+}
+
+TEST(ColonizeConfigLimits, AMeshShapeFileLargerThanTheLimitIsReportedUnderItsKey) {
+    const auto dir = std::filesystem::temp_directory_path() / "ramus_config_mesh_limit";
+    std::filesystem::create_directories(dir);
+    writeFileAtomic((dir / "m.obj").string(), "v 0 0 0\nv 1 0 0\n");  // 16 bytes
+    const std::string config =
+        R"({"envelopes": [{"shape": "mesh", "file": "m.obj", "points": 10}]})";
+    try {
+        parseColonizeConfig(config, (dir / "tree.json").string(), 15);
+        FAIL() << "expected the size limit";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("envelopes[0].file"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("the file is larger than the input limit of 15 bytes"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace ramus

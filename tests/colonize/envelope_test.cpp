@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "ramus/error.hpp"
+#include "ramus/file_util.hpp"
 #include "ramus/rng.hpp"
 
 namespace ramus {
@@ -234,6 +236,66 @@ TEST(PointFile, UnknownExtensionIsRejected) {
         EXPECT_EQ(std::string(e.what()),
                   "cloud.las: unsupported point file extension '.las'; expected .xyz, .txt, "
                   ".csv or .ply");
+    }
+}
+
+}  // namespace
+}  // namespace ramus
+
+namespace ramus {
+namespace {
+
+// Non-finite numbers in point files, one test per format, and the PLY header's vertex count.
+TEST(PointFileNonFinite, XyzNumbersBeyondDoubleRangeNameTheLine) {
+    EXPECT_EQ(errorOf("0 0 0\n1 1e999 2\n", "xyz"),
+              "in.xyz:2: coordinate '1e999' is outside the range of a double; expected a finite "
+              "number");
+}
+
+TEST(PointFileNonFinite, CsvNanIsRejected) {
+    EXPECT_EQ(errorOf("x,y,z\nnan,0,0\n", "csv"), "in.csv:2: coordinate 'nan' is not finite");
+}
+
+TEST(PointFileNonFinite, PlyInfinityIsRejected) {
+    EXPECT_EQ(errorOf("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                      "property float y\nproperty float z\nend_header\n0 -inf 0\n",
+                      "ply"),
+              "in.ply:8: coordinate '-inf' is not finite");
+}
+
+TEST(PointFileNonFinite, PlyVertexCountBeyondTheLimitIsAnError) {
+    for (const char* count : {"1e300", "4294967296", "nan", "-1"}) {
+        EXPECT_EQ(errorOf(std::string("ply\nformat ascii 1.0\nelement vertex ") + count +
+                              "\nproperty float x\nproperty float y\n"
+                              "property float z\nend_header\n",
+                          "ply"),
+                  std::string("in.ply:3: invalid vertex count '") + count +
+                      "'; expected an integer from 0 to 4294967295");
+    }
+}
+
+TEST(PointFileNonFinite, AHugeClaimedVertexCountFailsAtTheEndOfTheData) {
+    // The claimed count is not reserved up front (that would exhaust memory).
+    EXPECT_EQ(errorOf("ply\nformat ascii 1.0\nelement vertex 4000000000\n"
+                      "property float x\nproperty float y\nproperty float z\n"
+                      "end_header\n1 2 3\n",
+                      "ply"),
+              "in.ply:8: the file ends after 1 of 4000000000 vertices");
+}
+
+TEST(PointFileLimits, AFileLargerThanTheLimitIsRefused) {
+    const auto path = std::filesystem::temp_directory_path() / "ramus_points_limit.xyz";
+    writeFileAtomic(path.string(), "1 2 3\n4 5 6\n");  // 12 bytes
+    EXPECT_EQ(readPointsFile(path.string(), 12).size(), 2u);
+    try {
+        readPointsFile(path.string(), 11);
+        FAIL() << "expected the size limit";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path.string() +
+                                             ": the file is larger than the input limit of 11 "
+                                             "bytes"),
+                  std::string::npos)
+            << e.what();
     }
 }
 

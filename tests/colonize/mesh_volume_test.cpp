@@ -306,3 +306,29 @@ TEST(MeshVolume, AGlbIsReadWithItsNodeTransform) {
 
 }  // namespace
 }  // namespace ramus::testing
+
+namespace ramus::testing {
+namespace {
+
+// Mesh files used as envelopes: non-finite coordinates are errors located at the value, and
+// files above the size limit are refused before they are parsed.
+TEST(MeshVolumeInput, ObjNanAndInfinityAreLocatedAtTheValue) {
+    EXPECT_EQ(errorOf([] { parseObjVolume("v 0 0 0\nv 1 nan 0\n", "a.obj"); }),
+              "a.obj:2:5: invalid coordinate 'nan'; expected a finite number");
+    EXPECT_EQ(errorOf([] { parseObjVolume("v 0 0 -inf\n", "a.obj"); }),
+              "a.obj:1:7: invalid coordinate '-inf'; expected a finite number");
+    EXPECT_EQ(errorOf([] { parseObjVolume("v 1e999 0 0\n", "a.obj"); }),
+              "a.obj:1:3: invalid coordinate '1e999'; expected a finite number");
+}
+
+TEST(MeshVolumeInput, AMeshFileLargerThanTheLimitIsRefused) {
+    const auto path = std::filesystem::temp_directory_path() / "ramus_mesh_limit.obj";
+    writeFileAtomic(path.string(), "v 0 0 0\n");  // 8 bytes
+    EXPECT_NE(errorOf([&] {
+                  readMeshVolume(path.string(), 7);
+              }).find(path.string() + ": the file is larger than the input limit of 7 bytes"),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace ramus::testing

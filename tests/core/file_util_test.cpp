@@ -59,3 +59,26 @@ TEST(Error, MessageStartsWithFileLineAndColumn) {
 
 }  // namespace
 }  // namespace ramus
+
+namespace ramus {
+namespace {
+
+TEST(FileUtilLimits, AFileUpToTheLimitIsReadAndALargerOneIsRefused) {
+    const fs::path dir = scratchDir("read_limit");
+    const std::string path = (dir / "ten.txt").string();
+    writeFileAtomic(path, "0123456789");
+    EXPECT_EQ(readFile(path, 10), "0123456789");
+    try {
+        readFile(path, 9);
+        FAIL() << "expected the size limit";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(path + ": the file is larger than the input limit "
+                                                     "of 9 bytes; expected a smaller file",
+                                              0),
+                  0u)
+            << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace ramus

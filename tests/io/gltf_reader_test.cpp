@@ -279,3 +279,39 @@ TEST(GltfReader, NodeWithTwoParentsIsAnError) {
 
 }  // namespace
 }  // namespace ramus
+
+namespace ramus {
+namespace {
+
+TEST(GltfReaderInput, ANodeTransformBeyondDoubleRangeIsAReadError) {
+    // nlohmann::json cannot even hold the number, so it is put into the text afterwards.
+    json doc = json::parse(R"({"nodes": [{"translation": [7777, 0, 0]}]})");
+    const std::string path = writeGltf("huge_translation", doc, std::string(4, '\0'));
+    std::string text = readFile(path);
+    text.replace(text.find("7777"), 4, "1e999");
+    writeFileAtomic(path, text);
+    try {
+        readGltf(path);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(path + ": cannot read glTF: ", 0), 0u) << e.what();
+    }
+}
+
+TEST(GltfReaderInput, AFileLargerThanTheLimitIsRefused) {
+    json doc = json::parse(R"({"nodes": [{}]})");
+    const std::string path = writeGltf("size_limit", doc, std::string(4, '\0'));
+    const std::size_t size = std::filesystem::file_size(path);
+    EXPECT_NO_THROW(readGltf(path, size));
+    try {
+        readGltf(path, size - 1);
+        FAIL() << "expected the size limit";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path + ": the file is larger than the input limit"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace ramus

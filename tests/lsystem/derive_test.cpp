@@ -322,3 +322,64 @@ TEST(LSystemFormat, RoundTripsEveryModuleCharacter) {
 
 }  // namespace
 }  // namespace ramus
+
+namespace ramus {
+namespace {
+
+// A(a, b, c) doubles every step: after k steps 2^k modules with 3 parameter values each, so a
+// word takes 2^k · (12 + 3 · 8) = 36 · 2^k bytes, and step k holds 36 · (2^(k-1) + 2^k).
+constexpr const char* kDoublingWithParameters =
+    "axiom: A(1, 2, 3)\nA(a, b, c) -> A(a, b, c) A(a + 1, b, c)";
+
+TEST(LSystemDeriveMemory, AStepThatFitsTheBudgetExactlyIsAllowed) {
+    ASSERT_EQ(kModuleBytes, 12u);
+    ASSERT_EQ(kParamBytes, 8u);
+    LSystem s = parseLSystem(kDoublingWithParameters, "params.lsys");
+    DeriveOptions o;
+    o.derivations = 10;
+    o.maxMemoryBytes = 36 * (512 + 1024);  // exactly step 10's two words
+    const ModuleString word = deriveLSystem(s, o);
+    EXPECT_EQ(word.size(), 1024u);
+    EXPECT_EQ(word.params.size(), 3072u);
+}
+
+TEST(LSystemDeriveMemory, ParametersHitTheMemoryLimitWellUnderTheModuleLimit) {
+    LSystem s = parseLSystem(kDoublingWithParameters, "params.lsys");
+    DeriveOptions o;
+    o.derivations = 10;
+    o.maxMemoryBytes = 36 * (512 + 1024) - 1;  // one byte short of step 10
+    o.maxModules = 1'000'000;
+    try {
+        deriveLSystem(s, o);
+        FAIL() << "expected the memory limit";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.loc().file, "params.lsys");
+        EXPECT_THAT(e.what(), HasSubstr("params.lsys: derivation step 10 of 10 would exceed the "
+                                        "memory limit of 1 MiB (55295 bytes) for its words: 512 "
+                                        "modules with 1536 parameter values rewritten into"));
+        EXPECT_THAT(e.what(), HasSubstr("--max-memory"));
+    }
+    o.derivations = 9;  // 36 · (256 + 512) bytes: well within
+    EXPECT_EQ(deriveLSystem(s, o).size(), 512u);
+}
+
+TEST(LSystemDeriveMemory, AnAxiomLargerThanTheBudgetIsAnError) {
+    DeriveOptions o;
+    o.maxMemoryBytes = 3 * kModuleBytes;  // the axiom has four modules
+    EXPECT_THAT(deriveError("axiom: FFFF", o),
+                HasSubstr("derivation step 0 of 1 would exceed the memory limit"));
+}
+
+TEST(LSystemDeriveMemory, TheBudgetDoesNotChangeTheWord) {
+    LSystem s = parseLSystem(kDoublingWithParameters, "params.lsys");
+    DeriveOptions tight;
+    tight.derivations = 10;
+    tight.maxMemoryBytes = 36 * (512 + 1024);
+    DeriveOptions roomy = tight;
+    roomy.maxMemoryBytes = DeriveOptions{}.maxMemoryBytes;
+    EXPECT_EQ(formatModules(s.symbols, deriveLSystem(s, tight)),
+              formatModules(s.symbols, deriveLSystem(s, roomy)));
+}
+
+}  // namespace
+}  // namespace ramus

@@ -2,6 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "ramus/error.hpp"
@@ -357,6 +358,53 @@ TEST(LSystemParseErrors, ExpressionNestedTooDeeply) {
     std::string deep(200, '(');
     EXPECT_THAT(parseError("axiom: F(" + deep + "1" + std::string(200, ')') + ")"),
                 HasSubstr("expression nested too deeply"));
+}
+
+}  // namespace
+}  // namespace ramus
+
+namespace ramus {
+namespace {
+
+// Non-finite numbers are refused where they enter: literals beyond double range, constants and
+// header values that evaluate to NaN or infinity, and --set overrides.
+TEST(LSystemNonFiniteInput, DefineBeyondDoubleRangeIsRefusedAtTheNumber) {
+    EXPECT_THAT(parseError("#define a 1e999\naxiom: F(a)"),
+                HasSubstr("bad.lsys:1:11: number '1e999' is out of range"));
+}
+
+TEST(LSystemNonFiniteInput, DefineEvaluatingToInfinityIsRefused) {
+    EXPECT_THAT(parseError("#define a 1e300 * 1e300\naxiom: F(a)"),
+                HasSubstr("bad.lsys:1:17: constant expression has no finite value"));
+}
+
+TEST(LSystemNonFiniteInput, NanIsNotANumberLiteral) {
+    EXPECT_THAT(parseError("#define a nan\naxiom: F(a)"),
+                HasSubstr("bad.lsys:1:11: unknown identifier 'nan'"));
+    EXPECT_THAT(parseError("axiom: F(inf)"), HasSubstr("bad.lsys:1:10: unknown identifier 'inf'"));
+}
+
+TEST(LSystemNonFiniteInput, HeaderValuesBeyondDoubleRangeAreRefused) {
+    EXPECT_THAT(parseError("angle: 1e999\naxiom: F"),
+                HasSubstr("bad.lsys:1:8: number '1e999' is out of range"));
+    EXPECT_THAT(parseError("step: 1e308 * 10\naxiom: F"),
+                HasSubstr("bad.lsys:1:13: constant expression has no finite value"));
+    EXPECT_THAT(parseError("tropism: 0 1 0 1e999\naxiom: F"),
+                HasSubstr("bad.lsys:1:16: number '1e999' is out of range"));
+}
+
+TEST(LSystemNonFiniteInput, ModuleParameterBeyondDoubleRangeIsRefused) {
+    EXPECT_THAT(parseError("axiom: A\nA -> F(-1e400)"),
+                HasSubstr("bad.lsys:2:9: number '1e400' is out of range"));
+}
+
+TEST(LSystemNonFiniteInput, NonFiniteSetOverridesAreRefused) {
+    for (double value : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+        ParseOptions o;
+        o.constantOverrides = {{"a", value}};
+        EXPECT_THAT(parseError("#define a 1\naxiom: F(a)", o),
+                    HasSubstr("bad.lsys: --set a: value is not finite; expected a number"));
+    }
 }
 
 }  // namespace

@@ -268,3 +268,24 @@ TEST(SpeciesJson, ClassNamesRoundTrip) {
 
 }  // namespace
 }  // namespace ramus
+
+namespace ramus {
+namespace {
+
+TEST(SpeciesJsonNonFinite, ASpineCoordinateBeyondDoubleRangeIsLocatedAtTheNumber) {
+    std::string text = validFile().dump(2);
+    const std::size_t at = text.find("12.5");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 4, "1e999");
+    const std::string message = errorForText(text);
+    EXPECT_CONTAINS(message, "test.json:");
+    EXPECT_CONTAINS(message, "number '1e999' is out of range");
+}
+
+TEST(SpeciesJsonNonFinite, NanIsNotJson) {
+    const std::string message = errorForText("{\"format\": \"ramus-species\",\n \"version\": NaN}");
+    EXPECT_CONTAINS(message, "test.json:2:");
+}
+
+}  // namespace
+}  // namespace ramus

@@ -352,3 +352,38 @@ TEST(SpeciesSvg, RoundTripIsLosslessForAwkwardRecords) {
 
 }  // namespace
 }  // namespace ramus
+
+namespace ramus {
+namespace {
+
+// Non-finite numbers in SVG annotations are refused where they are read.
+TEST(SpeciesSvgNonFinite, PathDataBeyondDoubleRangeNamesTheElement) {
+    EXPECT_CONTAINS(importError(backOnly("viewBox=\"0 0 1000 1000\"", "M 0 0 L 1e999 0")),
+                    "a.svg:2:1: bad path data for \"back\": at character 9: expected a number");
+}
+
+TEST(SpeciesSvgNonFinite, ViewBoxWithInfinityIsRefused) {
+    EXPECT_CONTAINS(importError(backOnly("viewBox=\"0 0 inf 1000\"", "M 0 0 L 1 0")),
+                    "bad viewBox \"0 0 inf 1000\"; expected 4 numbers");
+}
+
+TEST(SpeciesSvgNonFinite, SizeAttributesMustBeFiniteNumbers) {
+    EXPECT_CONTAINS(importError(backOnly("width=\"1e999\" height=\"10\"", "M 0 0 L 1 0")), "width");
+}
+
+TEST(SpeciesSvgNonFinite, RamusAttributesMustBeFiniteNumbers) {
+    SvgImportOptions o = fields();
+    o.weightKg.reset();
+    for (const char* value : {"nan", "inf", "1e999"}) {
+        EXPECT_CONTAINS(
+            importError(backOnly(std::string("viewBox=\"0 0 1000 1000\" "
+                                             "ramus:weight-kg=\"") +
+                                     value + "\"",
+                                 "M 0 0 L 1 0"),
+                        o),
+            std::string("bad ramus:weight-kg \"") + value + "\"; expected a number >= 0");
+    }
+}
+
+}  // namespace
+}  // namespace ramus

@@ -32,6 +32,7 @@ struct BatchOptions {
     int jobs = 0;
     std::string shard = "0/1";
     bool resume = false;
+    std::size_t maxItems = kMaxBatchItems;
 };
 
 // Set by SIGINT/SIGTERM: no new items start; running items finish their atomic writes. A signal
@@ -155,7 +156,7 @@ nlohmann::ordered_json summary(const BatchManifest& manifest, const std::vector<
 
 void run(const BatchOptions& o) {
     const Shard shard = parseShard(o.shard);
-    const BatchManifest manifest = loadBatchManifest(o.manifest);
+    const BatchManifest manifest = loadBatchManifest(o.manifest, o.maxItems);
     checkJobInputs(manifest);
     const JobBoneLibraries bones = loadJobBoneLibraries(manifest);
     const std::vector<BatchItem> items = shardItems(manifest, shard.index, shard.count);
@@ -234,6 +235,10 @@ void addBatchCommand(CLI::App& app) {
                     "I/N: make every N-th item starting at item I (cluster array jobs)")
         ->capture_default_str();
     cmd->add_flag("--resume", o->resume, "skip items whose outputs already exist");
+    cmd->add_option("--max-items", o->maxItems,
+                    "stop with an error when the manifest has more items")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->callback([o] { run(*o); });
 }
 

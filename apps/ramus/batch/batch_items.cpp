@@ -100,7 +100,10 @@ LSystem lsystemOf(const BatchManifest& manifest, const nlohmann::json& inputs) {
 
 ColonizeConfig colonizeConfigOf(const BatchManifest& manifest, const nlohmann::json& inputs) {
     onlyKeys(inputs, {"config"});
-    return loadColonizeConfig(inputFile(manifest, inputs, "config"));
+    const std::string file = inputFile(manifest, inputs, "config");
+    ColonizeConfig config = loadColonizeConfig(file);
+    checkIterationLimit(config, kDefaultMaxIterations, file);
+    return config;
 }
 
 void writeModel(const Scene& scene, const fs::path& dir, const BatchJob& job,

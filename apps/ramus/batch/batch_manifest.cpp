@@ -2,6 +2,7 @@
 #include "batch/batch_manifest.hpp"
 
 #include <filesystem>
+#include <limits>
 
 #include "core/json_text.hpp"
 #include "json_inputs.hpp"
@@ -44,7 +45,7 @@ std::string outputPattern(const nlohmann::json& job, const char* key, const std:
     return pattern;
 }
 
-BatchJob parseJob(const nlohmann::json& job, const std::string& path) {
+BatchJob parseJob(const nlohmann::json& job, const std::string& path, std::size_t maxItems) {
     requireObject(job, path);
     for (const auto& [key, value] : job.items()) {
         if (key != "kind" && key != "count" && key != "inputs" && key != "output" && key != "png") {
@@ -56,8 +57,14 @@ BatchJob parseJob(const nlohmann::json& job, const std::string& path) {
     BatchJob result;
     result.kind = parseKind(job, path);
     if (job.contains("count")) {
-        result.count =
-            integerIn(job["count"], path + ".count", 1, static_cast<int>(kMaxBatchItems));
+        const nlohmann::json& count = job["count"];
+        if (count.is_number_integer() && count.get<std::int64_t>() > 0 &&
+            static_cast<std::uint64_t>(count.get<std::int64_t>()) > maxItems) {
+            throw Error(path + ".count: " + count.dump() + " items are above the limit of " +
+                        std::to_string(maxItems) +
+                        "; expected fewer, or raise the limit with --max-items");
+        }
+        result.count = integerIn(count, path + ".count", 1, std::numeric_limits<int>::max());
     }
     if (const auto* inputs = optionalMember(job, "inputs", nlohmann::json::value_t::object)) {
         result.inputs = *inputs;
@@ -75,7 +82,8 @@ std::size_t BatchManifest::itemCount() const {
     return n;
 }
 
-BatchManifest parseBatchManifest(const std::string& text, const std::string& path) {
+BatchManifest parseBatchManifest(const std::string& text, const std::string& path,
+                                 std::size_t maxItems) {
     const nlohmann::json root = detail::parseJsonText(text, path);
     BatchManifest manifest;
     manifest.path = path;
@@ -92,16 +100,18 @@ BatchManifest parseBatchManifest(const std::string& text, const std::string& pat
         for (std::size_t j = 0; j < jobs->size(); ++j) {
             const std::string jobPath = "jobs[" + std::to_string(j) + "]";
             try {
-                manifest.jobs.push_back(parseJob((*jobs)[j], jobPath));
+                manifest.jobs.push_back(parseJob((*jobs)[j], jobPath, maxItems));
             } catch (const Error& e) {
                 // Messages of the typed readers start with the key; give the whole path.
                 if (e.message().rfind(jobPath, 0) == 0) throw;
                 throw Error(jobPath + "." + e.message());
             }
-        }
-        if (manifest.itemCount() > kMaxBatchItems) {
-            throw Error("jobs: " + std::to_string(manifest.itemCount()) +
-                        " items; expected at most " + std::to_string(kMaxBatchItems));
+            if (manifest.itemCount() > maxItems) {
+                throw Error("jobs: " + std::to_string(manifest.itemCount()) + " items in jobs[0.." +
+                            std::to_string(j) + "] are above the limit of " +
+                            std::to_string(maxItems) +
+                            "; expected fewer, or raise the limit with --max-items");
+            }
         }
     } catch (const Error& e) {
         if (!e.loc().file.empty()) throw;
@@ -110,8 +120,8 @@ BatchManifest parseBatchManifest(const std::string& text, const std::string& pat
     return manifest;
 }
 
-BatchManifest loadBatchManifest(const std::string& path) {
-    return parseBatchManifest(readFile(path), path);
+BatchManifest loadBatchManifest(const std::string& path, std::size_t maxItems) {
+    return parseBatchManifest(readFile(path), path, maxItems);
 }
 
 std::vector<BatchItem> shardItems(const BatchManifest& manifest, std::size_t shard,

@@ -38,14 +38,17 @@ struct BatchItem {
     std::size_t n = 0;
 };
 
-/// Largest number of items in one manifest (a typo like 1e9 fails at once, not after hours).
+/// Default largest number of items in one manifest (`ramus batch --max-items`): a typo like
+/// 1e9 fails at once, not after hours.
 inline constexpr std::size_t kMaxBatchItems = 10'000'000;
 
 /// Parses a manifest; every error names the file and the JSON path (and line:col for syntax
 /// errors). Outputs must stay inside the output directory (no absolute paths, no "..") and
 /// every output pattern must contain "{index}" or "{n}" when its job makes several items.
-BatchManifest parseBatchManifest(const std::string& text, const std::string& path);
-BatchManifest loadBatchManifest(const std::string& path);
+/// More than `maxItems` items in all (or in one job) is an error naming the count and limit.
+BatchManifest parseBatchManifest(const std::string& text, const std::string& path,
+                                 std::size_t maxItems = kMaxBatchItems);
+BatchManifest loadBatchManifest(const std::string& path, std::size_t maxItems = kMaxBatchItems);
 
 /// The items of shard `shard` of `shards` (every shards-th item, starting at shard), in order.
 std::vector<BatchItem> shardItems(const BatchManifest& manifest, std::size_t shard,

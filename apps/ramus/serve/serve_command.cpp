@@ -7,6 +7,7 @@
 #include <mutex>
 #include <string>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "ramus/error.hpp"
 #include "serve/studio_api.hpp"
@@ -27,6 +28,7 @@ struct ServeOptions {
     int queue = 16;
     std::string root;
     studio::StudioLimits limits;
+    std::size_t maxMemoryMiB = studio::StudioLimits{}.maxMemoryBytes >> 20;
 };
 
 /// Bounds concurrent generation: at most `jobs` run, at most `queue` wait; more are refused
@@ -191,18 +193,41 @@ void addServeCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--root", o->root, "folder with web/ and examples/ (default: found)");
     cmd->add_option("--time-limit", o->limits.timeSeconds, "seconds per request")
-        ->check(CLI::PositiveNumber)
+        ->check(finiteNumber(0.0, false, 1e6, "a number of seconds in (0, 1e6]", true))
         ->capture_default_str();
     cmd->add_option("--max-modules", o->limits.maxModules, "L-system word limit per request")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    cmd->add_option("--max-memory", o->maxMemoryMiB, "L-system word memory per request, in MiB")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20))
+        ->capture_default_str();
+    cmd->add_option("--max-derivations", o->limits.maxDerivations,
+                    "L-system derivation steps per request")
+        ->check(CLI::Range(0, 1000))
+        ->capture_default_str();
     cmd->add_option("--max-points", o->limits.maxPoints, "attraction points per request")
         ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--max-iterations", o->limits.maxIterations,
+                    "colonization iterations per request")
+        ->check(CLI::Range(1, 100'000'000))
+        ->capture_default_str();
+    cmd->add_option("--max-nodes", o->limits.maxNodes, "colonization nodes per request")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--max-triangles", o->limits.maxTriangles, "triangles per response")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--max-skeletons", o->limits.maxSkeletons, "skeletons per request")
+        ->check(CLI::Range(1, 10'000))
         ->capture_default_str();
     cmd->add_option("--max-body", o->limits.maxBodyBytes, "request body limit in bytes")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->callback([o] { run(*o); });
+    cmd->callback([o] {
+        o->limits.maxMemoryBytes = o->maxMemoryMiB << 20;
+        run(*o);
+    });
 }
 
 }  // namespace ramus::cli

@@ -135,6 +135,7 @@ nlohmann::json lsystemRequest(const nlohmann::json& request, const StudioLimits&
     }
     DeriveOptions derive;
     derive.maxModules = limits.maxModules;
+    derive.maxMemoryBytes = limits.maxMemoryBytes;
     if (request.contains("derivations")) {
         derive.derivations =
             integerIn(request["derivations"], "derivations", 0, limits.maxDerivations);
@@ -193,14 +194,21 @@ nlohmann::json colonizeRequest(const nlohmann::json& request, const StudioLimits
                                 std::to_string(limits.maxPoints));
     }
     if (config.params.maxIterations > limits.maxIterations) {
-        throw ApiError(
-            413, "config.growth.max_iterations: " + std::to_string(config.params.maxIterations) +
-                     "; the studio allows at most " + std::to_string(limits.maxIterations));
+        throw ApiError(413,
+                       "config.max_iterations: " + std::to_string(config.params.maxIterations) +
+                           "; the studio allows at most " + std::to_string(limits.maxIterations));
     }
+    config.params.maxNodes = limits.maxNodes;
     StageTimer clock;
     const std::vector<Vec3> points = configAttractionPoints(config);
     clock.lap("sample");
-    const ColonizeResult result = growFromConfig(config, points);
+    ColonizeResult result;
+    try {
+        result = growFromConfig(config, points);
+    } catch (const Error& e) {  // the node limit (the config itself was checked above)
+        throw ApiError(413, std::string(e.what()) + " (the studio allows at most " +
+                                std::to_string(limits.maxNodes) + " nodes)");
+    }
     clock.lap("grow");
     deadline.check("growth");
     // The config's whole asset (leaves, textures, weld) as `ramus colonize` makes it; the view

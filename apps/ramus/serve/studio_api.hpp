@@ -14,15 +14,17 @@ namespace ramus::studio {
 /// outgrow maxModules, colonization maxPoints and the config's iterations, …); the time budget
 /// is checked between stages, so a request stops at the first stage boundary past it.
 struct StudioLimits {
-    std::size_t maxBodyBytes = 1u << 20;   ///< request body (bytes)
-    std::size_t maxModules = 2'000'000;    ///< L-system word (modules)
-    int maxDerivations = 64;               ///< L-system derivation steps
-    std::size_t maxPoints = 200'000;       ///< colonization attraction points
-    int maxIterations = 2'000;             ///< colonization iterations
-    std::size_t maxTriangles = 4'000'000;  ///< triangles of one response's meshes
-    int maxSkeletons = 32;                 ///< skeletons per request
-    double timeSeconds = 10.0;             ///< wall time per request
-    std::size_t maxShownPoints = 20'000;   ///< attraction points sent back for display
+    std::size_t maxBodyBytes = 1u << 20;      ///< request body (bytes)
+    std::size_t maxModules = 2'000'000;       ///< L-system word (modules)
+    std::size_t maxMemoryBytes = 256u << 20;  ///< L-system words (DeriveOptions::maxMemoryBytes)
+    int maxDerivations = 64;                  ///< L-system derivation steps
+    std::size_t maxPoints = 200'000;          ///< colonization attraction points
+    int maxIterations = 2'000;                ///< colonization iterations
+    std::size_t maxNodes = 1'000'000;         ///< colonization nodes of all trees
+    std::size_t maxTriangles = 4'000'000;     ///< triangles of one response's meshes
+    int maxSkeletons = 32;                    ///< skeletons per request
+    double timeSeconds = 10.0;                ///< wall time per request
+    std::size_t maxShownPoints = 20'000;      ///< attraction points sent back for display
 };
 
 /// A request the API refuses: HTTP status (400 bad input, 413 over a size limit, 408 over the
