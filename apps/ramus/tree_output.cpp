@@ -235,13 +235,13 @@ void addAssetOptions(CLI::App& command, AssetOptions& o) {
     command
         .add_option("--leaves-per-length", o.leaf.perLength,
                     "leaves per model unit along branches near tips")
-        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"));
     command
         .add_option("--leaf-zone", o.leaf.zone,
                     "distance from a tip where --leaves-per-length applies (0 = 4 leaf lengths)")
-        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"));
     command.add_option("--leaf-size", o.leaf.size, "leaf length (0 = the mean edge length)")
-        ->check(finiteNumber(0.0, true, kHuge, "a finite number >= 0"));
+        ->check(finiteNumber(0.0, true, kHugeNumber, "a finite number >= 0"));
     command.add_option("--leaf-width", o.leaf.widthRatio, "leaf width / length")
         ->check(finiteNumber(0.0, false, 4.000001, "a number in (0, 4]"));
     command

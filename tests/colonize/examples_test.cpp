@@ -121,7 +121,7 @@ TEST(ColonizeExamples, EveryTrunkOfTheMultiTrunkExampleReachesTheSharedCrown) {
         const BranchTree& tree = r.trees[t];
         EXPECT_EQ(tree.node(0).position, config.params.roots[t]);
         EXPECT_GT(tree.bounds().max.y(), 420.0 - 260.0);  // into the crown's lower half at least
-        EXPECT_GT(tree.size(), total / 10);                // a fair share, not a stub
+        EXPECT_GT(tree.size(), total / 10);               // a fair share, not a stub
     }
 }
 

@@ -213,8 +213,7 @@ nlohmann::json colonizeRequest(const nlohmann::json& request, const StudioLimits
     deadline.check("growth");
     // The config's whole asset (leaves, textures, weld) as `ramus colonize` makes it; the view
     // shows the full detail, so LODs are left out.
-    const cli::AssetSettings assets =
-        withTextErrors([&] { return cli::colonizeAssets(config); });
+    const cli::AssetSettings assets = withTextErrors([&] { return cli::colonizeAssets(config); });
     Mesh mesh = cli::forestModel(result.trees, assets.mesh, {}).mesh;
     clock.lap("mesh");
     deadline.check("meshing");
