@@ -1,5 +1,5 @@
 // Synthetic trees of a given edge count for the mesher benchmarks (mesh_bench.cpp,
-// welded_bench.cpp), and the counters they report.
+// welded_bench.cpp, tree_asset_bench.cpp, io_bench.cpp), and the counters they report.
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -32,11 +32,11 @@ inline BranchTree binaryTree(std::int64_t edges) {
 
 // Branches of 8 internodes; each internode starts a lateral with probability 0.3 until the
 // edge budget is spent (laterals are queued, so growth is breadth first).
-inline BranchTree monopodialTree(std::int64_t edges) {
+inline BranchTree monopodialTree(std::int64_t edges, std::uint64_t seed) {
     BranchTree tree;
     tree.reserve(static_cast<std::size_t>(edges) + 1);
     tree.addRoot(Vec3::Zero());
-    Rng rng(2);
+    Rng rng(seed);
     std::vector<std::pair<NodeId, Vec3>> buds{{0, Vec3(0, 1, 0)}};
     for (std::size_t b = 0; b < buds.size(); ++b) {
         auto [node, heading] = buds[b];
@@ -52,6 +52,9 @@ inline BranchTree monopodialTree(std::int64_t edges) {
     }
     return tree;
 }
+
+// The default seed, as a one-argument function the mesher benchmarks take by pointer.
+inline BranchTree monopodialTree(std::int64_t edges) { return monopodialTree(edges, 2); }
 
 inline void reportMesh(benchmark::State& state, const BranchTree& tree, const Mesh& mesh) {
     const auto edges = static_cast<double>(tree.edgeCount());

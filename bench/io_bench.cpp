@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_trees.hpp"
 #include "ramus/export.hpp"
 #include "ramus/rng.hpp"
 #include "ramus/skeleton.hpp"
@@ -141,24 +142,7 @@ BENCHMARK(BM_EncodeGlbSkeletonScene)->Unit(benchmark::kMicrosecond);
 
 // A random monopodial branch tree of `edges` edges meshed as tubes: ~edges × 8 vertices.
 ramus::Mesh treeMesh(std::int64_t edges) {
-    ramus::BranchTree tree;
-    tree.addRoot(Vec3::Zero());
-    ramus::Rng rng(3);
-    std::vector<std::pair<ramus::NodeId, Vec3>> buds{{0, Vec3(0, 1, 0)}};
-    for (std::size_t b = 0; b < buds.size(); ++b) {
-        auto [node, heading] = buds[b];
-        for (int i = 0; i < 8 && static_cast<std::int64_t>(tree.edgeCount()) < edges; ++i) {
-            heading = (heading + Vec3(rng.gauss(0, 0.1), 0.02, rng.gauss(0, 0.1))).normalized();
-            node = tree.addChild(node, tree.node(node).position + 0.2 * heading);
-            if (rng.uniform01() < 0.3) {
-                buds.emplace_back(
-                    node, (heading + Vec3(rng.gauss(0, 1), 0.3, rng.gauss(0, 1)).normalized())
-                              .normalized());
-            }
-        }
-        if (static_cast<std::int64_t>(tree.edgeCount()) >= edges) break;
-    }
-    return ramus::buildTubeMesh(tree, ramus::TubeMeshParams{});
+    return ramus::buildTubeMesh(ramus::bench::monopodialTree(edges, 3), ramus::TubeMeshParams{});
 }
 
 void BM_EncodeGlbTreeMesh(benchmark::State& state) {

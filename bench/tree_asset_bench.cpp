@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bench_trees.hpp"
 #include "ramus/leaves.hpp"
 #include "ramus/rng.hpp"
 #include "ramus/tree_asset.hpp"
@@ -18,26 +19,7 @@ using ramus::BranchTree;
 using ramus::NodeId;
 using ramus::Vec3;
 
-BranchTree monopodialTree(std::int64_t edges) {
-    BranchTree tree;
-    tree.reserve(static_cast<std::size_t>(edges) + 1);
-    tree.addRoot(Vec3::Zero());
-    ramus::Rng rng(2);
-    std::vector<std::pair<NodeId, Vec3>> buds{{0, Vec3(0, 1, 0)}};
-    for (std::size_t b = 0; b < buds.size(); ++b) {
-        auto [node, heading] = buds[b];
-        for (int i = 0; i < 8 && static_cast<std::int64_t>(tree.edgeCount()) < edges; ++i) {
-            heading = (heading + Vec3(rng.gauss(0, 0.1), 0.02, rng.gauss(0, 0.1))).normalized();
-            node = tree.addChild(node, tree.node(node).position + 0.2 * heading);
-            if (rng.uniform01() < 0.3) {
-                const Vec3 side(rng.gauss(0, 1), 0.3, rng.gauss(0, 1));
-                buds.emplace_back(node, (heading + side.normalized()).normalized());
-            }
-        }
-        if (static_cast<std::int64_t>(tree.edgeCount()) >= edges) break;
-    }
-    return tree;
-}
+using ramus::bench::monopodialTree;
 
 ramus::TreeMeshParams assetParams(bool wind) {
     ramus::TreeMeshParams p;

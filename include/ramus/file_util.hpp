@@ -14,6 +14,9 @@ namespace ramus {
 /// inputs (point and mesh files) have a flag to change it (docs/cli.md, "Limits").
 inline constexpr std::size_t kMaxInputFileBytes = std::size_t{1} << 30;
 
+/// The extension of `path`'s file name in lower case with its dot (".obj"), or "" without one.
+std::string lowerExtension(const std::string& path);
+
 /// Reads a whole file of at most `maxBytes` bytes. Throws Error("PATH: cannot read file:
 /// <reason>") on failure and Error("PATH: the file is larger than the input limit of N bytes;
 /// …") past the limit.

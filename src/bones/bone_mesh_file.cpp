@@ -219,13 +219,6 @@ Mesh sceneMesh(const Scene& scene, const std::string& path) {
     return out;
 }
 
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 }  // namespace
 
 void checkBoneMesh(const Mesh& mesh, const std::string& file,

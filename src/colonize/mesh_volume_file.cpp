@@ -50,13 +50,6 @@ MeshVolume sceneVolume(const Scene& scene, const std::string& path) {
     }
 }
 
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 }  // namespace
 
 MeshVolume parseObjVolume(const std::string& text, const std::string& fileName) {

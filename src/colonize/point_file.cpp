@@ -202,16 +202,6 @@ std::vector<Vec3> parsePly(std::string_view text, const std::string& file) {
     return points;
 }
 
-std::string lowerExtension(const std::string& path) {
-    const std::size_t dot = path.find_last_of('.');
-    const std::size_t slash = path.find_last_of("/\\");
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-    std::string ext = path.substr(dot + 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 }  // namespace
 
 std::vector<Vec3> parsePoints(const std::string& text, const std::string& format,
@@ -224,6 +214,7 @@ std::vector<Vec3> parsePoints(const std::string& text, const std::string& format
 
 std::vector<Vec3> readPointsFile(const std::string& path, std::size_t maxBytes) {
     std::string ext = lowerExtension(path);
+    if (!ext.empty()) ext.erase(0, 1);  // without the dot
     if (ext == "txt") ext = "xyz";
     if (ext != "xyz" && ext != "csv" && ext != "ply") {
         throw Error(path + ": unsupported point file extension '." + ext +

@@ -4,13 +4,12 @@
 
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
+#include "ramus/file_util.hpp"
 
 namespace ramus {
 
 void writeScene(const Scene& scene, const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lowerExtension(path);
     if (ext == ".glb") {
         writeGlb(scene, path);
     } else if (ext == ".obj") {
