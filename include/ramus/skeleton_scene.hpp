@@ -1,6 +1,7 @@
 // A skeleton as a glTF-ready scene (DESIGN.md "glTF"; SPEC §H): one joint node per bone under
-// the root bone's node, one skin over all of them, and one skinned mesh of every bone's mesh in
-// bind pose, each vertex bound rigidly to its bone's joint.
+// the root bone's node, one skin over all of them, and one skinned mesh per bone in bind pose,
+// every vertex bound rigidly to its bone's joint (issue 6: "one mesh per bone bound to its
+// joint", so each bone is its own object in Blender and poses with its joint).
 //
 // Axes: the internal px frame (skeleton.hpp: y up, head towards −x, left side at +z) becomes
 // glTF's (metres, Y up, front +Z, left +X, ground on y = 0):
@@ -24,8 +25,8 @@ namespace ramus {
 /// The mesh of one bone in the bone's own frame (px; skeleton.hpp's Bone: x ∈ [0, length] from
 /// the joint towards the child, y and z centred): triangles counter-clockwise seen from
 /// outside, the frame right-handed for left, right and center bones alike. Normals, tangents and
-/// uvs are optional (the skeleton mesh keeps an attribute only if every non-empty bone mesh has
-/// it); the mesh's materials, primitives, joints and weights are ignored. An empty mesh draws
+/// uvs are optional (kept when they cover every vertex); the mesh's name, materials,
+/// primitives, joints, weights and custom attributes are replaced. An empty mesh draws
 /// nothing for that bone. The bone-model library plugs its scaled models in here (bones.hpp).
 /// `boneIndex` is the bone's index in Skeleton::bones.
 using BoneMeshSource = std::function<Mesh(int boneIndex, const Bone& bone)>;
@@ -43,13 +44,12 @@ Material boneMaterial();
 struct SkeletonSceneParams {
     /// The mesh of each bone; empty = boneBoxMesh (boxes, written without a per-bone Mesh).
     BoneMeshSource boneMesh;
-    /// Material of every bone; the skeleton mesh has one primitive per bone kind present (in
-    /// BoneKind order), each with a copy of this material named "<material.name>_<kind>" (e.g.
-    /// "bone_vertebra"), so glTF importers get material slots and OBJ files usemtl groups per
-    /// kind.
+    /// Material of every bone; each bone mesh has one primitive named after its kind with a
+    /// copy of this material named "<material.name>_<kind>" (e.g. "bone_vertebra"), so glTF
+    /// importers get one material slot and OBJ files one usemtl per kind.
     Material material = boneMaterial();
-    /// Name of the skinned mesh, of the root-level node that holds it and of the skin.
-    std::string meshName = "skeleton";
+    /// Name of the skin.
+    std::string skinName = "skeleton";
 };
 
 /// The 4×4 transform internal px frame → glTF metres (see the file comment); maps the point
@@ -72,12 +72,15 @@ Mat3 boneFromNode();
 ///   with all joint angles 0 —, "dofs": [{"axis": [x, y, z], "angle_deg", "min_deg",
 ///   "max_deg"}]}; the axes are unit vectors in the node's own frame at rest, and the node's
 ///   local rotation is rest_rotation · rot(axis₀, angle₀) · rot(axis₁, angle₁).
-/// - node n: params.meshName, a root node with the identity transform holding mesh 0 with
-///   skin 0 (glTF ignores a skinned node's transform; it is not a joint).
+/// - nodes n, n+1, …: one per bone with a mesh, in bone order, named "<bone name>_mesh": root
+///   nodes with the identity transform holding that bone's mesh with skin 0 (glTF ignores a
+///   skinned node's transform; they are not joints).
 /// - skin 0: joints 0 … n−1 (bone order), skeleton = node 0, inverse bind matrices = the
 ///   inverse world matrix of each joint node.
-/// - mesh 0: every bone's mesh in bind pose (glTF world coordinates), grouped into one
-///   primitive per bone kind; each vertex has joints (bone, 0, 0, 0) and weights (1, 0, 0, 0).
+/// - meshes, one per bone with a mesh (the zero-size root and bones whose source mesh is empty
+///   have none), in bone order, named Bone::name(): the bone's mesh in bind pose (glTF world
+///   coordinates), one primitive named after the bone kind; each vertex has joints
+///   (bone, 0, 0, 0) and weights (1, 0, 0, 0).
 /// - extras: "ground_height_px", "metres_per_pixel", "heel_contact".
 /// An empty skeleton (no bones) gives an empty scene. Precondition: bones[0] is the root and
 /// parents come before children (Skeleton's invariants), joint rotations are orthonormal, at

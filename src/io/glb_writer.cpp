@@ -8,8 +8,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <span>
+#include <tuple>
+#include <unordered_map>
 
 #include "io/json_writer.hpp"
 #include "io/scene_check.hpp"
@@ -140,8 +143,9 @@ public:
 
 private:
     // A buffer view of `count` elements of T written by fill(T* destination), 4-byte aligned.
+    // byteStride (0: none) is required when several accessors read one vertex view.
     template <typename T, typename Fill>
-    int addBufferView(std::size_t count, int target, Fill fill);
+    int addBufferView(std::size_t count, int target, Fill fill, int byteStride = 0);
     template <typename T>
     int addBufferView(const std::vector<T>& data, int target) {
         const std::size_t bytes = data.size() * sizeof(T);
@@ -155,6 +159,8 @@ private:
     void addVertexAttributes(const Mesh& mesh, JsonWriter& attributes);
     void addSkinAttributes(const Mesh& mesh, JsonWriter& attributes);
     int addIndices(const Mesh& mesh);
+    int addIndexAccessor(int view, std::size_t byteOffset, bool shortIndices, std::size_t count);
+    int addRigidWeights(std::size_t count);
     int addMesh(const Mesh& mesh);
     void addNodes(const std::vector<int>& meshIndex);
     void addNode(std::size_t i, std::span<const int> children, const std::vector<int>& meshIndex);
@@ -190,12 +196,26 @@ private:
         images_{imagesText_}, textures_{texturesText_};
     int bufferViewCount_ = 0, accessorCount_ = 0, meshCount_ = 0;
     std::vector<int> roots_;
+    // Data several meshes share is written once: index buffers with equal contents (bone meshes
+    // fitted from one library model; boxes) by a hash of their values, and the rigid weights
+    // (1, 0, 0, 0) as one view of the largest rigid mesh's length that every rigid mesh's
+    // WEIGHTS_0 accessor reads from its start.
+    struct IndexView {
+        const Mesh* mesh;
+        int view;
+    };
+    std::unordered_multimap<std::uint64_t, IndexView> indexViews_;
+    // (view, byte offset, count) → index accessor
+    std::map<std::tuple<int, std::size_t, std::size_t>, int> indexAccessors_;
+    std::size_t rigidVertexCount_ = 0;  // longest rigid mesh
+    int rigidWeightsView_ = -1;
+    std::unordered_map<std::size_t, int> rigidWeightAccessors_;  // by vertex count
     std::vector<Material> materialKeys_;
     std::vector<const Image*> textureKeys_;  // one glTF image and texture each
 };
 
 template <typename T, typename Fill>
-int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill) {
+int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill, int byteStride) {
     static_assert(alignof(T) <= 4, "buffer views are only 4-byte aligned");
     alignBin();
     const std::size_t offset = binSize_;
@@ -211,6 +231,10 @@ int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill) {
     w.value(std::uint64_t{offset});
     w.key("byteLength");
     w.value(std::uint64_t{bytes});
+    if (byteStride != 0) {
+        w.key("byteStride");
+        w.value(byteStride);
+    }
     if (target != 0) {  // inverse bind matrices have none
         w.key("target");
         w.value(target);
@@ -421,24 +445,70 @@ void GlbBuilder::addSkinAttributes(const Mesh& mesh, JsonWriter& attributes) {
         addAccessor(jointView, 0, maxJoint <= 255 ? kUnsignedByte : kUnsignedShort, n, "VEC4"));
     attributes.key("WEIGHTS_0");
     if (rigid) {
-        const int view = addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [n](std::uint8_t* dst) {
-            for (std::size_t i = 0; i < 4 * n; ++i) dst[i] = i % 4 == 0 ? 255 : 0;
-        });
-        attributes.value(addAccessor(view, 0, kUnsignedByte, n, "VEC4", nullptr, true));
+        attributes.value(addRigidWeights(n));
     } else {
         attributes.value(addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4"));
     }
 }
 
+// The WEIGHTS_0 accessor of `count` rigidly bound vertices: normalised UNSIGNED_BYTE (1, 0, 0, 0)
+// from the start of the one shared view.
+int GlbBuilder::addRigidWeights(std::size_t count) {
+    if (rigidWeightsView_ < 0) {
+        const std::size_t n = rigidVertexCount_;
+        rigidWeightsView_ = addBufferView<std::uint8_t>(
+            4 * n, kArrayBuffer,
+            [n](std::uint8_t* dst) {
+                for (std::size_t i = 0; i < 4 * n; ++i) dst[i] = i % 4 == 0 ? 255 : 0;
+            },
+            4);
+    }
+    const auto [it, added] = rigidWeightAccessors_.try_emplace(count, -1);
+    if (added) {
+        it->second = addAccessor(rigidWeightsView_, 0, kUnsignedByte, count, "VEC4", nullptr, true);
+    }
+    return it->second;
+}
+
+// FNV-1a over the index values and the index width.
+std::uint64_t indexHash(const std::vector<std::uint32_t>& indices, bool shortIndices) {
+    std::uint64_t h = 1469598103934665603ull ^ (shortIndices ? 1u : 0u);
+    for (std::uint32_t i : indices) h = (h ^ i) * 1099511628211ull;
+    return h;
+}
+
 // The mesh's index buffer view: UNSIGNED_SHORT when every index fits below 65535 (65535 is the
-// primitive restart value), else UNSIGNED_INT.
+// primitive restart value), else UNSIGNED_INT; a view of an earlier mesh with the same indices
+// and width is reused.
 int GlbBuilder::addIndices(const Mesh& mesh) {
-    if (mesh.positions.size() > 65535) return addBufferView(mesh.indices, kElementArrayBuffer);
-    return addBufferView<std::uint16_t>(mesh.indices.size(), kElementArrayBuffer,
-                                        [&mesh](std::uint16_t* dst) {
-                                            for (std::uint32_t i : mesh.indices)
-                                                *dst++ = static_cast<std::uint16_t>(i);
-                                        });
+    const bool shortIndices = mesh.positions.size() <= 65535;
+    const std::uint64_t hash = indexHash(mesh.indices, shortIndices);
+    const auto [first, last] = indexViews_.equal_range(hash);
+    for (auto it = first; it != last; ++it) {
+        const Mesh& other = *it->second.mesh;
+        if ((other.positions.size() <= 65535) == shortIndices && other.indices == mesh.indices) {
+            return it->second.view;
+        }
+    }
+    const int view =
+        shortIndices ? addBufferView<std::uint16_t>(mesh.indices.size(), kElementArrayBuffer,
+                                                    [&mesh](std::uint16_t* dst) {
+                                                        for (std::uint32_t i : mesh.indices)
+                                                            *dst++ = static_cast<std::uint16_t>(i);
+                                                    })
+                     : addBufferView(mesh.indices, kElementArrayBuffer);
+    indexViews_.emplace(hash, IndexView{&mesh, view});
+    return view;
+}
+
+// An index accessor; the same range of the same view gets the same accessor.
+int GlbBuilder::addIndexAccessor(int view, std::size_t byteOffset, bool shortIndices,
+                                 std::size_t count) {
+    const auto [it, added] = indexAccessors_.try_emplace({view, byteOffset, count}, -1);
+    if (!added) return it->second;
+    it->second = addAccessor(view, byteOffset, shortIndices ? kUnsignedShort : kUnsignedInt, count,
+                             "SCALAR");
+    return it->second;
 }
 
 // One glTF mesh: shared vertex accessors, one index buffer view, one index accessor and one
@@ -464,8 +534,8 @@ int GlbBuilder::addMesh(const Mesh& mesh) {
         w.key("attributes");
         w.rawValue(attributesText);
         w.key("indices");
-        w.value(addAccessor(indexView, std::size_t{p.firstIndex} * (shortIndices ? 2 : 4),
-                            shortIndices ? kUnsignedShort : kUnsignedInt, p.indexCount, "SCALAR"));
+        w.value(addIndexAccessor(indexView, std::size_t{p.firstIndex} * (shortIndices ? 2 : 4),
+                                 shortIndices, p.indexCount));
         w.key("material");
         w.value(addMaterial(io::primitiveMaterial(mesh, p)));
         if (!p.name.empty()) {
@@ -663,6 +733,11 @@ void GlbBuilder::encode() {
     std::size_t extrasBytes = 0;
     for (const SceneNode& node : scene_.nodes) extrasBytes += node.extrasJson.size();
     nodesText_.reserve(extrasBytes + 160 * scene_.nodes.size());
+    for (const Mesh& mesh : scene_.meshes) {
+        if (!mesh.joints.empty() && rigidlyBound(mesh)) {
+            rigidVertexCount_ = std::max(rigidVertexCount_, mesh.positions.size());
+        }
+    }
     std::vector<int> meshIndex;
     for (const Mesh& mesh : scene_.meshes) meshIndex.push_back(addMesh(mesh));
     addNodes(meshIndex);

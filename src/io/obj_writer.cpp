@@ -197,9 +197,10 @@ std::vector<std::uint32_t> dominantJoints(const Mesh& mesh) {
     return joint;
 }
 
-// A skinned mesh: one o/g group per joint, named like the joint's node (e.g. "thigh_L"), with
-// the triangles whose first corner is bound most strongly to it and the vertices they use, so
-// a skeleton's bones import as separate objects; materials stay as usemtl within each group.
+// A skinned mesh bound to several joints: one o/g group per joint, named like the joint's node
+// (e.g. "thigh_L"), with the triangles whose first corner is bound most strongly to it and the
+// vertices they use, so a skeleton's bones import as separate objects; materials stay as usemtl
+// within each group.
 void appendJointGroups(std::string& out, const Scene& scene, const io::MeshInstance& inst,
                        MaterialTable& materials, VertexBase& base) {
     const Mesh& mesh = scene.meshes[inst.mesh];
@@ -241,17 +242,32 @@ void appendJointGroups(std::string& out, const Scene& scene, const io::MeshInsta
     }
 }
 
+// The joint node that every vertex of a skinned instance is bound to most strongly (a bone
+// mesh of a skeleton), or -1 when they differ.
+int singleJointNode(const Scene& scene, const io::MeshInstance& inst) {
+    const std::vector<std::uint32_t> joint = dominantJoints(scene.meshes[inst.mesh]);
+    if (joint.empty() || std::any_of(joint.begin(), joint.end(),
+                                     [&joint](std::uint32_t j) { return j != joint[0]; })) {
+        return -1;
+    }
+    return scene.skins[static_cast<std::size_t>(scene.nodes[inst.node].skin)].joints[joint[0]];
+}
+
 void appendInstance(std::string& out, const Scene& scene, const io::MeshInstance& inst,
                     MaterialTable& materials, VertexBase& base) {
     const Mesh& mesh = scene.meshes[inst.mesh];
+    int namingNode = inst.node;  // the group is named like this node
     if (inst.node >= 0 && scene.nodes[inst.node].skin >= 0 && !mesh.joints.empty()) {
-        appendJointGroups(out, scene, inst, materials, base);
-        return;
+        namingNode = singleJointNode(scene, inst);
+        if (namingNode < 0) {
+            appendJointGroups(out, scene, inst, materials, base);
+            return;
+        }
     }
-    const std::string fallback =
-        inst.node >= 0 ? "node_" + std::to_string(inst.node) : "mesh_" + std::to_string(inst.mesh);
+    const std::string fallback = namingNode >= 0 ? "node_" + std::to_string(namingNode)
+                                                 : "mesh_" + std::to_string(inst.mesh);
     const std::string name =
-        objName(inst.node >= 0 ? scene.nodes[inst.node].name : mesh.name, fallback);
+        objName(namingNode >= 0 ? scene.nodes[namingNode].name : mesh.name, fallback);
     out += "o " + name + "\ng " + name + "\n";
     appendVertices(out, mesh, inst.world);
     const bool mirrored = isMirrored(inst.world);

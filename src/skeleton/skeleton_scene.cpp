@@ -236,67 +236,59 @@ void addJointNodes(const Skeleton& skeleton, const std::vector<Mat4>& local, Sce
     scene.skins.push_back(std::move(skin));
 }
 
-// ---- the skinned mesh ------------------------------------------------------------------------
+// ---- one skinned mesh per bone ---------------------------------------------------------------
 
-// Collects the bind-pose vertices of every bone and its triangles per bone kind.
-class SkeletonMeshBuilder {
+// Turns bone-frame meshes into bind-pose glTF meshes, one per bone, every vertex rigidly bound
+// to the bone's joint, with one material per bone kind.
+class BoneMeshBuilder {
 public:
-    // world: Skeleton::worldTransforms(); vertexHint, indexHint: expected totals (reserved).
-    SkeletonMeshBuilder(const Skeleton& skeleton, std::vector<Mat4> world, std::size_t vertexHint,
-                        const std::array<std::size_t, kBoneKindCount>& indexHint)
-        : toGltf_(skeletonToGltf(skeleton)), world_(std::move(world)) {
-        mesh_.positions.reserve(vertexHint);
-        mesh_.normals.reserve(vertexHint);
-        mesh_.joints.reserve(vertexHint);
-        mesh_.weights.reserve(vertexHint);
-        for (int k = 0; k < kBoneKindCount; ++k) kindIndices_[k].reserve(indexHint[k]);
+    // world: Skeleton::worldTransforms().
+    BoneMeshBuilder(const Skeleton& skeleton, std::vector<Mat4> world,
+                    const SkeletonSceneParams& params)
+        : skeleton_(skeleton), toGltf_(skeletonToGltf(skeleton)), world_(std::move(world)) {
+        for (int k = 0; k < kBoneKindCount; ++k) {
+            materials_[k] = params.material;
+            materials_[k].name += "_" + std::string(boneKindName(static_cast<BoneKind>(k)));
+        }
     }
 
-    /// boneBoxMesh's box of `bone` (nothing for boxes without volume).
-    void addBox(std::size_t bone, BoneKind kind, const Vec3& extents);
-    void addMesh(std::size_t bone, BoneKind kind, const Mesh& mesh);
-    Mesh finish(const SkeletonSceneParams& params);
+    /// The mesh of bone i from its box (false for boxes without volume).
+    bool box(std::size_t bone, Mesh& mesh) const;
+    /// The mesh of bone i from `source` in the bone frame, transformed in place (false when it
+    /// has no triangles).
+    bool fit(std::size_t bone, Mesh& source) const;
 
 private:
-    std::uint32_t addVertices(std::size_t bone, const Vec3f* positions, const Vec3f* normals,
-                              std::size_t count);
+    // Names the mesh, binds its vertices to the joint and gives it its kind's material.
+    void finish(std::size_t bone, Mesh& mesh) const;
 
+    const Skeleton& skeleton_;
     Mat4 toGltf_;
     std::vector<Mat4> world_;
-    Mesh mesh_;
-    std::array<std::vector<std::uint32_t>, kBoneKindCount> kindIndices_;
-    bool normals_ = true, tangents_ = true, uvs_ = true;
+    std::array<Material, kBoneKindCount> materials_;
 };
 
-// Appends positions (and normals when given) transformed to glTF world, bound to `bone`;
-// returns the first new vertex.
-std::uint32_t SkeletonMeshBuilder::addVertices(std::size_t bone, const Vec3f* positions,
-                                               const Vec3f* normals, std::size_t count) {
+void BoneMeshBuilder::finish(std::size_t bone, Mesh& mesh) const {
+    const Bone& b = skeleton_.bones[bone];
+    const std::size_t n = mesh.positions.size();
+    mesh.name = b.name();
+    mesh.joints.assign(n, {static_cast<std::uint16_t>(bone), 0, 0, 0});
+    mesh.weights.assign(n, Vec4f(1.0f, 0.0f, 0.0f, 0.0f));
+    mesh.attributes.clear();
+    const auto kind = static_cast<std::size_t>(b.kind);
+    mesh.materials.assign(1, materials_[kind]);
+    mesh.primitives.assign(1, MeshPrimitive{0, static_cast<std::uint32_t>(mesh.indices.size()), 0,
+                                            std::string(boneKindName(b.kind))});
+}
+
+// The same vertices as makeBox(extents) transformed, from the box's 8 transformed corners and 6
+// turned face normals.
+bool BoneMeshBuilder::box(std::size_t bone, Mesh& mesh) const {
+    Vec3f lo, hi;
+    if (!boxBounds(skeleton_.bones[bone].extents, lo, hi)) return false;
     const Mat4 m = toGltf_ * world_[bone];
     const Mat3 linear = m.topLeftCorner<3, 3>();
     const Mat3 rotation = linear / linear.col(0).norm();  // s·R·R_b without the scale
-    const auto base = static_cast<std::uint32_t>(mesh_.positions.size());
-    const auto joint = static_cast<std::uint16_t>(bone);
-    for (std::size_t i = 0; i < count; ++i) {
-        const Vec3 p = linear * positions[i].cast<double>() + m.topRightCorner<3, 1>();
-        mesh_.positions.push_back(p.cast<float>());
-        if (normals != nullptr) {
-            mesh_.normals.push_back((rotation * normals[i].cast<double>()).cast<float>());
-        }
-        mesh_.joints.push_back({joint, 0, 0, 0});
-        mesh_.weights.push_back(Vec4f(1.0f, 0.0f, 0.0f, 0.0f));
-    }
-    return base;
-}
-
-// The same vertices as addVertices(makeBox(extents)), from the box's 8 transformed corners
-// and 6 turned face normals.
-void SkeletonMeshBuilder::addBox(std::size_t bone, BoneKind kind, const Vec3& extents) {
-    Vec3f lo, hi;
-    if (!boxBounds(extents, lo, hi)) return;
-    const Mat4 m = toGltf_ * world_[bone];
-    const Mat3 linear = m.topLeftCorner<3, 3>();
-    const Mat3 rotation = linear / linear.col(0).norm();
     std::array<Vec3f, 8> corners;
     for (int c = 0; c < 8; ++c) {
         const Vec3f p((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(),
@@ -305,76 +297,41 @@ void SkeletonMeshBuilder::addBox(std::size_t bone, BoneKind kind, const Vec3& ex
     }
     std::array<Vec3f, 6> faceNormals;
     for (int f = 0; f < 6; ++f) {
-        Vec3 n = Vec3::Zero();
-        n[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
-        faceNormals[f] = (rotation * n).cast<float>();
+        Vec3 normal = Vec3::Zero();
+        normal[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
+        faceNormals[f] = (rotation * normal).cast<float>();
     }
-    const std::size_t base = mesh_.positions.size();
-    const auto joint = static_cast<std::uint16_t>(bone);
-    mesh_.positions.resize(base + kBoxVertices);
-    mesh_.normals.resize(base + kBoxVertices);
-    mesh_.joints.resize(base + kBoxVertices, {joint, 0, 0, 0});
-    mesh_.weights.resize(base + kBoxVertices, Vec4f(1.0f, 0.0f, 0.0f, 0.0f));
-    Vec3f* positions = mesh_.positions.data() + base;
-    Vec3f* normals = mesh_.normals.data() + base;
+    mesh.positions.resize(kBoxVertices);
+    mesh.normals.resize(kBoxVertices);
     for (int v = 0; v < kBoxVertices; ++v) {
-        positions[v] = corners[kBoxCornerOf[v]];
-        normals[v] = faceNormals[v / 4];
+        mesh.positions[v] = corners[kBoxCornerOf[v]];
+        mesh.normals[v] = faceNormals[v / 4];
     }
-    std::vector<std::uint32_t>& indices = kindIndices_[static_cast<int>(kind)];
-    const std::size_t first = indices.size();
-    indices.resize(first + kBoxIndices);
-    for (int k = 0; k < kBoxIndices; ++k) {
-        indices[first + k] = static_cast<std::uint32_t>(base) + kBoxIndexPattern[k];
-    }
+    mesh.indices.assign(kBoxIndexPattern.begin(), kBoxIndexPattern.end());
+    finish(bone, mesh);
+    return true;
 }
 
-void SkeletonMeshBuilder::addMesh(std::size_t bone, BoneKind kind, const Mesh& mesh) {
+bool BoneMeshBuilder::fit(std::size_t bone, Mesh& mesh) const {
     const std::size_t n = mesh.positions.size();
-    if (n == 0 || mesh.indices.empty()) return;
-    // An attribute survives only if every bone mesh has it.
-    normals_ = normals_ && mesh.normals.size() == n;
-    tangents_ = tangents_ && mesh.tangents.size() == n;
-    uvs_ = uvs_ && mesh.uvs.size() == n;
-    if (!normals_) mesh_.normals.clear();
-    if (!tangents_) mesh_.tangents.clear();
-    if (!uvs_) mesh_.uvs.clear();
-    const std::uint32_t base =
-        addVertices(bone, mesh.positions.data(), normals_ ? mesh.normals.data() : nullptr, n);
-    if (tangents_ || uvs_) {
-        const Mat4 m = toGltf_ * world_[bone];
-        const Mat3 rotation = m.topLeftCorner<3, 3>() / m.col(0).head<3>().norm();
-        for (std::size_t i = 0; tangents_ && i < n; ++i) {
-            const Vec3 t = rotation * mesh.tangents[i].head<3>().cast<double>();
-            mesh_.tangents.push_back(Vec4f(static_cast<float>(t.x()), static_cast<float>(t.y()),
-                                           static_cast<float>(t.z()), mesh.tangents[i].w()));
-        }
-        if (uvs_) mesh_.uvs.insert(mesh_.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    if (n == 0 || mesh.indices.empty()) return false;
+    const Mat4 m = toGltf_ * world_[bone];
+    const Mat3 linear = m.topLeftCorner<3, 3>();
+    const Mat3 rotation = linear / linear.col(0).norm();
+    for (Vec3f& p : mesh.positions) {
+        p = (linear * p.cast<double>() + m.topRightCorner<3, 1>()).cast<float>();
     }
-    std::vector<std::uint32_t>& indices = kindIndices_[static_cast<int>(kind)];
-    for (std::uint32_t i : mesh.indices) indices.push_back(base + i);
-}
-
-// Index buffer in BoneKind order, one primitive and material per kind present.
-Mesh SkeletonMeshBuilder::finish(const SkeletonSceneParams& params) {
-    mesh_.name = params.meshName;
-    std::size_t indexCount = 0;
-    for (const std::vector<std::uint32_t>& indices : kindIndices_) indexCount += indices.size();
-    mesh_.indices.reserve(indexCount);
-    for (int k = 0; k < kBoneKindCount; ++k) {
-        const std::vector<std::uint32_t>& indices = kindIndices_[k];
-        if (indices.empty()) continue;
-        const std::string kind(boneKindName(static_cast<BoneKind>(k)));
-        Material material = params.material;
-        material.name += "_" + kind;
-        mesh_.primitives.push_back(MeshPrimitive{static_cast<std::uint32_t>(mesh_.indices.size()),
-                                                 static_cast<std::uint32_t>(indices.size()),
-                                                 static_cast<std::uint32_t>(mesh_.materials.size()),
-                                                 kind});
-        mesh_.materials.push_back(std::move(material));
-        mesh_.indices.insert(mesh_.indices.end(), indices.begin(), indices.end());
+    // An attribute that does not cover every vertex is dropped (Mesh's invariant).
+    if (mesh.normals.size() != n) mesh.normals.clear();
+    if (mesh.tangents.size() != n) mesh.tangents.clear();
+    if (mesh.uvs.size() != n) mesh.uvs.clear();
+    for (Vec3f& normal : mesh.normals) normal = (rotation * normal.cast<double>()).cast<float>();
+    for (Vec4f& t : mesh.tangents) {
+        const Vec3 turned = rotation * t.head<3>().cast<double>();
+        t.head<3>() = turned.cast<float>();
     }
-    return std::move(mesh_);
+    finish(bone, mesh);
+    return true;
 }
 
 }  // namespace
@@ -421,28 +378,27 @@ Scene skeletonToScene(const Skeleton& skeleton, const SkeletonSceneParams& param
         world[i] = parent < 0 ? local[i] : Mat4(world[static_cast<std::size_t>(parent)] * local[i]);
     }
     addJointNodes(skeleton, local, scene);
-    // Space for a box per bone (exact for boxes, a first guess for bone meshes).
-    std::array<std::size_t, kBoneKindCount> indexHint{};
-    for (const Bone& bone : skeleton.bones) indexHint[static_cast<int>(bone.kind)] += kBoxIndices;
-    SkeletonMeshBuilder builder(skeleton, std::move(world), n * kBoxVertices, indexHint);
+    scene.skins[0].name = params.skinName;
+    scene.extrasJson = sceneExtras(skeleton);
+    const BoneMeshBuilder builder(skeleton, std::move(world), params);
+    scene.meshes.reserve(n);
+    scene.nodes.reserve(2 * n);
     for (std::size_t i = 0; i < n; ++i) {
         const Bone& bone = skeleton.bones[i];
+        Mesh mesh;
         if (params.boneMesh) {
-            builder.addMesh(i, bone.kind, params.boneMesh(static_cast<int>(i), bone));
-        } else {
-            builder.addBox(i, bone.kind, bone.extents);
+            mesh = params.boneMesh(static_cast<int>(i), bone);
+            if (!builder.fit(i, mesh)) continue;
+        } else if (!builder.box(i, mesh)) {
+            continue;
         }
+        SceneNode meshNode;
+        meshNode.name = mesh.name + "_mesh";
+        meshNode.mesh = static_cast<int>(scene.meshes.size());
+        meshNode.skin = 0;
+        scene.meshes.push_back(std::move(mesh));
+        scene.nodes.push_back(std::move(meshNode));
     }
-    Mesh mesh = builder.finish(params);
-    scene.skins[0].name = params.meshName;
-    scene.extrasJson = sceneExtras(skeleton);
-    if (mesh.indices.empty()) return scene;  // no bone has a mesh: joints only
-    scene.meshes.push_back(std::move(mesh));
-    SceneNode meshNode;
-    meshNode.name = params.meshName;
-    meshNode.mesh = 0;
-    meshNode.skin = 0;
-    scene.nodes.push_back(std::move(meshNode));
     return scene;
 }
 

@@ -133,15 +133,21 @@ TEST(BoneFit, WholeSkeletonsAtLowAndHighAreValidDeterministicAndWithinBudget) {
     const Skeleton s = skeletonFor(11, inputs);
     for (BoneResolution resolution : {BoneResolution::Low, BoneResolution::High}) {
         const Scene scene = skeletonSceneAt(s, resolution, "carnivore");
-        ASSERT_EQ(scene.meshes.size(), 1u);
-        std::size_t budget = 0;
+        // One mesh per bone with a model, in bone order, each within its model's budget.
+        std::size_t budget = 0, triangles = 0, m = 0;
         for (std::size_t i = 0; i < s.bones.size(); ++i) {
-            if (const auto kind = modelForBone(s, static_cast<int>(i), "carnivore")) {
-                budget += static_cast<std::size_t>(boneTriangleBudget(*kind, resolution));
-            }
+            const auto kind = modelForBone(s, static_cast<int>(i), "carnivore");
+            if (!kind) continue;
+            const auto boneBudget = static_cast<std::size_t>(boneTriangleBudget(*kind, resolution));
+            budget += boneBudget;
+            ASSERT_LT(m, scene.meshes.size());
+            EXPECT_EQ(scene.meshes[m].name, s.bones[i].name());
+            EXPECT_LE(scene.meshes[m].triangleCount(), boneBudget) << s.bones[i].name();
+            triangles += scene.meshes[m++].triangleCount();
         }
-        EXPECT_LE(scene.meshes[0].triangleCount(), budget);
-        EXPECT_GT(scene.meshes[0].triangleCount(), budget / 4);
+        EXPECT_EQ(m, scene.meshes.size());
+        EXPECT_LE(triangles, budget);
+        EXPECT_GT(triangles, budget / 4);
         const std::string glb = encodeGlb(scene);
         EXPECT_EQ(glb, encodeGlb(skeletonSceneAt(s, resolution, "carnivore")));
         if (const char* dir = std::getenv("RAMUS_TEST_OUTPUT"); dir && *dir) {

@@ -1,14 +1,16 @@
-// skeletonToScene: joint nodes, skin, skinned bind-pose mesh and the px → glTF conversion, on
-// small skeletons built by hand (root, spine, a rib pair and a leg pair mirrored across z = 0).
+// skeletonToScene: joint nodes, skin, skinned bind-pose bone meshes and the px → glTF conversion,
+// on small skeletons built by hand (root, spine, a rib pair and a leg pair mirrored across z = 0).
 #include "ramus/skeleton_scene.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "ramus/error.hpp"
 #include "ramus/export.hpp"
@@ -156,6 +158,13 @@ Mesh trianglesOfJoint(const Mesh& mesh, int joint) {
     return out;
 }
 
+// All bone meshes of the scene as one mesh (joints kept: vertex → bone).
+Mesh allBones(const Scene& scene) {
+    Mesh all;
+    for (const Mesh& mesh : scene.meshes) appendMesh(all, mesh);
+    return all;
+}
+
 int nodeNamed(const Scene& scene, const std::string& name) {
     for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
         if (scene.nodes[i].name == name) return static_cast<int>(i);
@@ -176,24 +185,32 @@ TEST(SkeletonScene, FixtureTwinsAreMirrorImages) {
     }
 }
 
-TEST(SkeletonScene, OneNodePerBonePlusTheMeshNode) {
+TEST(SkeletonScene, OneJointNodePerBoneThenOneMeshNodePerBoneWithABox) {
     const Skeleton s = makeSkeleton();
     const Scene scene = skeletonToScene(s);
     exportForValidator(scene, "hand_built");
-    ASSERT_EQ(scene.nodes.size(), s.bones.size() + 1);
-    for (std::size_t i = 0; i < s.bones.size(); ++i) {
+    const std::size_t n = s.bones.size();
+    ASSERT_EQ(scene.nodes.size(), n + (n - 1));  // the zero-size root has no box
+    ASSERT_EQ(scene.meshes.size(), n - 1);
+    for (std::size_t i = 0; i < n; ++i) {
         EXPECT_EQ(scene.nodes[i].name, s.bones[i].name());
         EXPECT_EQ(scene.nodes[i].parent, s.bones[i].parent);
         EXPECT_EQ(scene.nodes[i].mesh, -1);
         EXPECT_EQ(scene.nodes[i].scale, Vec3::Ones());
     }
-    const SceneNode& meshNode = scene.nodes.back();
-    EXPECT_EQ(meshNode.name, "skeleton");
-    EXPECT_EQ(meshNode.parent, -1);  // a root: not a joint, not below one
-    EXPECT_EQ(meshNode.mesh, 0);
-    EXPECT_EQ(meshNode.skin, 0);
-    EXPECT_EQ(meshNode.translation, Vec3::Zero());
-    EXPECT_TRUE(meshNode.rotation.coeffs().isApprox(Eigen::Quaterniond::Identity().coeffs()));
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const std::size_t bone = m + 1;
+        const SceneNode& meshNode = scene.nodes[n + m];
+        EXPECT_EQ(scene.meshes[m].name, s.bones[bone].name());
+        EXPECT_EQ(meshNode.name, s.bones[bone].name() + "_mesh");
+        EXPECT_EQ(meshNode.parent, -1);  // a root: not a joint, not below one
+        EXPECT_EQ(meshNode.mesh, static_cast<int>(m));
+        EXPECT_EQ(meshNode.skin, 0);
+        EXPECT_EQ(meshNode.translation, Vec3::Zero());
+        EXPECT_TRUE(meshNode.rotation.coeffs().isApprox(Eigen::Quaterniond::Identity().coeffs()));
+        // Bound to its own bone's joint alone.
+        for (const auto& j : scene.meshes[m].joints) EXPECT_EQ(j[0], bone);
+    }
     EXPECT_EQ(scene.nodes[0].name, "root");
     EXPECT_EQ(scene.nodes[8].name, "foot_L");
     EXPECT_EQ(scene.nodes[13].name, "foot_R");
@@ -289,7 +306,7 @@ TEST(SkeletonScene, TwinsAreMirroredAcrossTheYzPlane) {
 
 TEST(SkeletonScene, MeshStandsOnTheGroundAtYZero) {
     const Scene scene = skeletonToScene(makeSkeleton());
-    const Aabb box = scene.meshes[0].bounds();
+    const Aabb box = allBones(scene).bounds();
     EXPECT_NEAR(box.min.y(), 0.0, 1e-6);
     EXPECT_GE(box.min.y(), -1e-7);
 }
@@ -310,7 +327,7 @@ TEST(SkeletonScene, MetresPerPixelScalesPositionsButNotRotations) {
             << i;
         EXPECT_TRUE(large.nodes[i].rotation.isApprox(small.nodes[i].rotation, 1e-12)) << i;
     }
-    const Aabb a = small.meshes[0].bounds(), b = large.meshes[0].bounds();
+    const Aabb a = allBones(small).bounds(), b = allBones(large).bounds();
     EXPECT_TRUE((4.0 * a.extent()).isApprox(b.extent(), 1e-6));
     // The thigh is 60 px long: 0.06 m at 1 mm/px.
     const json extras = json::parse(small.nodes[nodeNamed(small, "thigh_L")].extrasJson);
@@ -323,7 +340,7 @@ TEST(SkeletonScene, MetresPerPixelScalesPositionsButNotRotations) {
 TEST(SkeletonScene, EveryBoneBoxIsWoundOutwardsIncludingMirroredOnes) {
     const Skeleton s = makeSkeleton();
     const Scene scene = skeletonToScene(s);
-    const Mesh& mesh = scene.meshes[0];
+    const Mesh mesh = allBones(scene);
     for (std::size_t i = 1; i < s.bones.size(); ++i) {  // the zero-size root has no box
         const Mesh box = trianglesOfJoint(mesh, static_cast<int>(i));
         ASSERT_EQ(box.indices.size(), 36u) << i;
@@ -336,7 +353,7 @@ TEST(SkeletonScene, EveryBoneBoxIsWoundOutwardsIncludingMirroredOnes) {
 TEST(SkeletonScene, VerticesAreRigidlyBoundAndSitInTheirBoneInBindPose) {
     const Skeleton s = makeSkeleton();
     const Scene scene = skeletonToScene(s);
-    const Mesh& mesh = scene.meshes[0];
+    const Mesh mesh = allBones(scene);
     ASSERT_EQ(mesh.joints.size(), mesh.positions.size());
     ASSERT_EQ(mesh.positions.size(), 24u * (s.bones.size() - 1));
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -356,7 +373,7 @@ TEST(SkeletonScene, VerticesAreRigidlyBoundAndSitInTheirBoneInBindPose) {
 
 TEST(SkeletonScene, NormalsFaceOutOfTheirFaces) {
     const Scene scene = skeletonToScene(makeSkeleton());
-    const Mesh& mesh = scene.meshes[0];
+    const Mesh mesh = allBones(scene);
     for (std::size_t k = 0; k < mesh.indices.size(); k += 3) {
         const Vec3f a = mesh.positions[mesh.indices[k]];
         const Vec3f face = (mesh.positions[mesh.indices[k + 1]] - a)
@@ -366,20 +383,55 @@ TEST(SkeletonScene, NormalsFaceOutOfTheirFaces) {
     }
 }
 
-TEST(SkeletonScene, OnePrimitiveAndMaterialPerBoneKindInKindOrder) {
-    const Scene scene = skeletonToScene(makeSkeleton());
-    const Mesh& mesh = scene.meshes[0];
-    std::vector<std::string> names, materials;
-    for (const MeshPrimitive& p : mesh.primitives) {
-        names.push_back(p.name);
-        materials.push_back(mesh.materials[p.material].name);
-        EXPECT_EQ(mesh.materials[p.material].roughness, 0.7f);
+TEST(SkeletonScene, EachBoneMeshHasOnePrimitiveWithItsKindsMaterial) {
+    const Skeleton s = makeSkeleton();
+    const Scene scene = skeletonToScene(s);
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        const std::string kind(boneKindName(s.bones[m + 1].kind));
+        ASSERT_EQ(mesh.primitives.size(), 1u);
+        ASSERT_EQ(mesh.materials.size(), 1u);
+        EXPECT_EQ(mesh.primitives[0].name, kind);
+        EXPECT_EQ(mesh.primitives[0].indexCount, 36u);
+        EXPECT_EQ(mesh.materials[0].name, "bone_" + kind);
+        EXPECT_EQ(mesh.materials[0].roughness, 0.7f);
     }
-    EXPECT_EQ(names,
-              std::vector<std::string>({"vertebra", "rib", "pelvis", "thigh", "shank", "foot"}));
+}
+
+// The GLB writes what bones share once: one material per kind, one index buffer for all boxes,
+// one view of rigid weights; each bone mesh has 16-bit indices and byte joints.
+TEST(SkeletonScene, GlbSharesMaterialsIndicesAndWeightsBetweenBones) {
+    const Skeleton s = makeSkeleton();
+    const Scene scene = skeletonToScene(s);
+    const std::string glb = encodeGlb(scene);
+    std::uint32_t jsonLength = 0;
+    std::memcpy(&jsonLength, glb.data() + 12, 4);
+    const json doc = json::parse(glb.substr(20, jsonLength));
+    std::vector<std::string> materials;
+    for (const json& m : doc["materials"]) materials.push_back(m["name"]);
     EXPECT_EQ(materials, std::vector<std::string>({"bone_vertebra", "bone_rib", "bone_pelvis",
                                                    "bone_thigh", "bone_shank", "bone_foot"}));
-    EXPECT_EQ(mesh.primitives[0].indexCount, 3u * 36u);  // three vertebrae
+    ASSERT_EQ(doc["meshes"].size(), scene.meshes.size());
+    std::set<int> indexAccessors, weightViews, positionViews;
+    for (const json& mesh : doc["meshes"]) {
+        ASSERT_EQ(mesh["primitives"].size(), 1u);
+        const json& prim = mesh["primitives"][0];
+        const json& indices = doc["accessors"][prim["indices"].get<int>()];
+        EXPECT_EQ(indices["componentType"], 5123);  // UNSIGNED_SHORT
+        indexAccessors.insert(prim["indices"].get<int>());
+        const json& joints = doc["accessors"][prim["attributes"]["JOINTS_0"].get<int>()];
+        EXPECT_EQ(joints["componentType"], 5121);  // UNSIGNED_BYTE
+        const json& weights = doc["accessors"][prim["attributes"]["WEIGHTS_0"].get<int>()];
+        EXPECT_EQ(weights["componentType"], 5121);
+        EXPECT_EQ(weights["normalized"], true);
+        weightViews.insert(weights["bufferView"].get<int>());
+        positionViews.insert(
+            doc["accessors"][prim["attributes"]["POSITION"].get<int>()]["bufferView"].get<int>());
+    }
+    EXPECT_EQ(indexAccessors.size(), 1u);
+    EXPECT_EQ(weightViews.size(), 1u);
+    EXPECT_EQ(positionViews.size(), scene.meshes.size());
+    EXPECT_EQ(doc["bufferViews"][*weightViews.begin()]["byteStride"], 4);
 }
 
 TEST(SkeletonScene, ExtrasNameKindSideRegionLimbAndJoint) {
@@ -449,7 +501,11 @@ TEST(SkeletonScene, GlbIsDeterministicAndReadsBack) {
     std::sort(written.begin(), written.end());
     std::sort(readBack.begin(), readBack.end());
     EXPECT_EQ(readBack, written);
-    EXPECT_EQ(read.meshes[0].positions, scene.meshes[0].positions);
+    ASSERT_EQ(read.meshes.size(), scene.meshes.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        EXPECT_EQ(read.meshes[m].positions, scene.meshes[m].positions) << m;
+        EXPECT_EQ(read.meshes[m].indices, scene.meshes[m].indices) << m;
+    }
 }
 
 TEST(SkeletonScene, ObjShowsOneGroupPerBoneWithItsKindsMaterial) {
@@ -473,7 +529,7 @@ TEST(SkeletonScene, ObjShowsOneGroupPerBoneWithItsKindsMaterial) {
     for (std::size_t p = obj.find("\nv "); p != std::string::npos; p = obj.find("\nv ", p + 1)) {
         ++vertices;
     }
-    EXPECT_EQ(vertices, scene.meshes[0].positions.size());
+    EXPECT_EQ(vertices, allBones(scene).positions.size());
 }
 
 TEST(SkeletonScene, CustomBoneMeshSourceReplacesTheBoxes) {
@@ -488,15 +544,17 @@ TEST(SkeletonScene, CustomBoneMeshSourceReplacesTheBoxes) {
         m.indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
         return m;
     };
-    params.meshName = "bones";
+    params.skinName = "bones";
     const Scene scene = skeletonToScene(s, params);
     exportForValidator(scene, "custom_bone_meshes");
-    const Mesh& mesh = scene.meshes[0];
-    EXPECT_EQ(mesh.name, "bones");
-    EXPECT_EQ(scene.nodes.back().name, "bones");
-    EXPECT_EQ(mesh.positions.size(), 4u * 10u);  // rib, pelvis, thigh, shank, foot × 2
+    EXPECT_EQ(scene.skins[0].name, "bones");
+    ASSERT_EQ(scene.meshes.size(), 10u);  // rib, pelvis, thigh, shank, foot × 2
+    EXPECT_EQ(scene.nodes.back().name, "foot_R_mesh");
+    const Mesh mesh = allBones(scene);
+    EXPECT_EQ(mesh.positions.size(), 4u * 10u);
     EXPECT_TRUE(mesh.normals.empty());
-    EXPECT_EQ(mesh.primitives.front().name, "rib");
+    EXPECT_EQ(scene.meshes.front().name, "rib_back_01_L");
+    EXPECT_EQ(scene.meshes.front().primitives.front().name, "rib");
     for (std::size_t i = 4; i < s.bones.size(); ++i) {
         const Mesh tetra = trianglesOfJoint(mesh, static_cast<int>(i));
         const double volume = s.bones[i].extents.x() / 6.0 * 1e-9;  // l · 1 · 1 / 6 px³ in m³
