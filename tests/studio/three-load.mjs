@@ -108,12 +108,12 @@ function judge(entry, r) {
 function describe(r) {
   if (r.error) return '';
   const parts = [`${r.meshes} meshes`, `${Math.round(r.triangles)} triangles`];
-  if (r.skins) {
+  if (r.skins && r.skinned) {
     const bones = Object.values(r.skinned.joints);
     parts.push(`${r.skinned.found} skinned, ${r.skins} ${r.skins === 1 ? 'skin' : 'skins'} of ${bones.join('/') || 0} bones`);
   }
-  if (r.custom.expected) parts.push(`${r.custom.arrived}/${r.custom.expected} custom attributes (${r.custom.wind} _WIND*)`);
-  if (r.lods.expected) parts.push(`${r.lods.arrived}/${r.lods.expected} LODs`);
+  if (r.custom?.expected) parts.push(`${r.custom.arrived}/${r.custom.expected} custom attributes (${r.custom.wind} _WIND*)`);
+  if (r.lods?.expected) parts.push(`${r.lods.arrived}/${r.lods.expected} LODs`);
   parts.push(`${r.pixels} px`, `${r.ms} ms`);
   return parts.join(', ');
 }
