@@ -7,7 +7,7 @@ OUT       ?= out
 CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
-.PHONY: all deps build run showcase serve test check-tests studio-e2e validate format \
+.PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load format \
         format-check bench bench-peers fuzz fuzz-smoke batch-check clean
 
 all: build
@@ -36,10 +36,10 @@ serve: deps
 	$(RAMUS) serve --port $(PORT)
 
 # Everything CI checks: formatting; every unit and end-to-end test in one ASan+UBSan build with
-# internal assertions on; the Khronos glTF validator over every GLB those tests wrote; a short
-# run of each fuzzer; the studio page end to end in headless Chromium. (Benchmarks measure speed
-# separately: `make bench`.)
-test: deps format-check check-tests studio-e2e validate fuzz-smoke
+# internal assertions on; the Khronos glTF validator over every GLB those tests wrote, and the
+# same GLBs loaded and rendered by three.js; a short run of each fuzzer; the studio page end to
+# end in headless Chromium. (Benchmarks measure speed separately: `make bench`.)
+test: deps format-check check-tests studio-e2e validate three-load fuzz-smoke
 	@echo "make test: all checks passed"
 	@node scripts/gtest-summary.mjs $(CHECK)/gtest.json
 
@@ -58,6 +58,11 @@ studio-e2e: check-tests
 
 validate: check-tests studio-e2e
 	@node tests/validator/validate.mjs $(CHECK)/test-output
+
+# Issue 9: every GLB of the tests through three.js's GLTFLoader (the studio's three.js) in
+# headless Chromium: parsed without warnings, skins, wind attributes, LODs, a non-blank render.
+three-load: check-tests studio-e2e
+	@node tests/studio/three-load.mjs $(CHECK)/test-output
 
 # Issue 8's scale check: 10 000 box skeletons and 1 000 small trees with `ramus batch --jobs 2`
 # (Release build; make test runs small batches).
