@@ -7,7 +7,7 @@ OUT       ?= out
 CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
-.PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load format \
+.PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load blender-import format \
         format-check bench bench-peers fuzz fuzz-smoke batch-check clean
 
 all: build
@@ -36,10 +36,10 @@ serve: deps
 	$(RAMUS) serve --port $(PORT)
 
 # Everything CI checks: formatting; every unit and end-to-end test in one ASan+UBSan build with
-# internal assertions on; the Khronos glTF validator over every GLB those tests wrote, and the
-# same GLBs loaded and rendered by three.js; a short run of each fuzzer; the studio page end to
+# internal assertions on; the Khronos glTF validator over every GLB those tests wrote, the
+# same GLBs loaded and rendered by three.js and imported into Blender; a short run of each fuzzer; the studio page end to
 # end in headless Chromium. (Benchmarks measure speed separately: `make bench`.)
-test: deps format-check check-tests studio-e2e validate three-load fuzz-smoke
+test: deps format-check check-tests studio-e2e validate three-load blender-import fuzz-smoke
 	@echo "make test: all checks passed"
 	@node scripts/gtest-summary.mjs $(CHECK)/gtest.json
 
@@ -63,6 +63,14 @@ validate: check-tests studio-e2e
 # headless Chromium: parsed without warnings, skins, wind attributes, LODs, a non-blank render.
 three-load: check-tests studio-e2e
 	@node tests/studio/three-load.mjs $(CHECK)/test-output
+
+# Every GLB of the test run imported into Debian's Blender with its glTF importer: objects,
+# triangles, armature and bones, and posing a skeleton's bone moves its mesh alone.
+blender-import: check-tests studio-e2e
+	@blender -b --factory-startup --python tests/blender/import_check.py -- \
+	  $(CHECK)/test-output/*.glb 2>&1 | grep -E '^(ok|FAIL|blender import|Traceback|Error)' \
+	  | tee $(CHECK)/blender-import.log | grep -v '^ok'; \
+	  grep -q '^blender import: .* 0 failures' $(CHECK)/blender-import.log
 
 # Issue 8's scale check: 10 000 box skeletons and 1 000 small trees with `ramus batch --jobs 2`
 # (Release build; make test runs small batches).

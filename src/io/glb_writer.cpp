@@ -733,6 +733,12 @@ void GlbBuilder::encode() {
     std::size_t extrasBytes = 0;
     for (const SceneNode& node : scene_.nodes) extrasBytes += node.extrasJson.size();
     nodesText_.reserve(extrasBytes + 160 * scene_.nodes.size());
+    // Typical sizes (a mesh has up to 6 accessors and views and one primitive), so the texts
+    // grow without repeated copies in scenes of many small meshes (one per skeleton bone).
+    const std::size_t meshes = scene_.meshes.size();
+    accessorsText_.reserve(6 * 110 * meshes);
+    bufferViewsText_.reserve(6 * 70 * meshes);
+    meshesText_.reserve(220 * meshes);
     for (const Mesh& mesh : scene_.meshes) {
         if (!mesh.joints.empty() && rigidlyBound(mesh)) {
             rigidVertexCount_ = std::max(rigidVertexCount_, mesh.positions.size());
