@@ -32,6 +32,7 @@ import path from 'node:path';
 import process from 'node:process';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+import { collectFiles } from '../common/collect_files.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, '../..');
@@ -47,15 +48,6 @@ const kTypes = {
   '.gltf': 'model/gltf+json', '.bin': 'application/octet-stream', '.png': 'image/png',
   '.jpg': 'image/jpeg', '.jpeg': 'image/jpeg', '.ktx2': 'image/ktx2', '.webp': 'image/webp',
 };
-
-function collect(target, out) {
-  const stat = fs.statSync(target);
-  if (stat.isDirectory()) {
-    for (const entry of fs.readdirSync(target).sort()) collect(path.join(target, entry), out);
-  } else if (kExtensions.has(path.extname(target).toLowerCase())) {
-    out.push({ file: target, bytes: stat.size });
-  }
-}
 
 /** `base/relative` when it stays inside base, else null. */
 function inside(base, relative) {
@@ -229,16 +221,7 @@ async function main(args) {
     console.error(`error: ${threeDir} is missing (run 'make deps')`);
     return 1;
   }
-  const files = [];
-  let unreadable = 0;
-  for (const arg of args) {
-    try {
-      collect(arg, files);
-    } catch (err) {
-      console.log(`${arg}: cannot read: ${err.message}`);
-      ++unreadable;
-    }
-  }
+  const { files, unreadable } = collectFiles(args, kExtensions);
   const toLoad = files.filter((f) => f.bytes <= kMaxBytes);
   const tempDir = selfTest ? fs.mkdtempSync(path.join(os.tmpdir(), 'ramus-three-')) : null;
   const copies = selfTest ? tamperedCopies(toLoad, tempDir) : [];

@@ -10,19 +10,10 @@ import fs from 'node:fs';
 import path from 'node:path';
 import process from 'node:process';
 import validator from 'gltf-validator';
+import { collectFiles } from '../common/collect_files.mjs';
 
 const kExtensions = new Set(['.glb', '.gltf']);
 const kSeverityNames = ['error', 'warning', 'info', 'hint'];
-
-function collect(target, out) {
-    const stat = fs.statSync(target);
-    if (stat.isDirectory()) {
-        const entries = fs.readdirSync(target).sort();
-        for (const entry of entries) collect(path.join(target, entry), out);
-    } else if (kExtensions.has(path.extname(target).toLowerCase())) {
-        out.push(target);
-    }
-}
 
 function loadExternal(file) {
     return (uri) => fs.promises.readFile(path.resolve(path.dirname(file),
@@ -58,16 +49,9 @@ async function main(args) {
         console.error('usage: node validate.mjs DIR_OR_FILE...');
         return 2;
     }
-    const files = [];
-    let unreadable = 0;
-    for (const arg of args) {
-        try {
-            collect(arg, files);
-        } catch (err) {
-            console.log(`${arg}: cannot read: ${err.message}`);
-            unreadable += 1;
-        }
-    }
+    const collected = collectFiles(args, kExtensions);
+    const files = collected.files.map((f) => f.file);
+    const { unreadable } = collected;
     let passed = 0;
     let failed = 0;
     for (const file of files) {
