@@ -41,17 +41,25 @@ serve: deps
 # end in headless Chromium. (Benchmarks measure speed separately: `make bench`.)
 test: deps format-check check-tests studio-e2e validate three-load blender-import fuzz-smoke
 	@echo "make test: all checks passed"
-	@node scripts/gtest-summary.mjs $(CHECK)/gtest.json
+	@node scripts/gtest-summary.mjs $(CHECK)/gtest-*.json
 
+TEST_SHARDS ?= $(JOBS)
 CHECK_FLAGS := -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRAMUS_SANITIZE=ON \
                -DRAMUS_ENABLE_ASSERTS=ON -DRAMUS_BUILD_BENCH=OFF
 check-tests: deps
 	@cmake -S . -B $(CHECK) $(CMAKE_GEN) $(CHECK_FLAGS) >/dev/null
 	@cmake --build $(CHECK) -j $(JOBS) --target ramus ramus_tests
-	@rm -rf $(CHECK)/test-output && mkdir -p $(CHECK)/test-output
-	cd $(CHECK) && RAMUS_TEST_OUTPUT=$(CURDIR)/$(CHECK)/test-output \
-	  RAMUS_BIN=$(CURDIR)/$(CHECK)/ramus ./ramus_tests --gtest_brief=1 \
-	  --gtest_output=json:$(CURDIR)/$(CHECK)/gtest.json
+	@rm -rf $(CHECK)/test-output $(CHECK)/gtest-*.json && mkdir -p $(CHECK)/test-output
+	@echo "ramus_tests in $(TEST_SHARDS) shards (GoogleTest sharding, one process per core)"
+	@cd $(CHECK) && pids=""; status=0; \
+	  for i in $$(seq 0 $$(($(TEST_SHARDS) - 1))); do \
+	    GTEST_TOTAL_SHARDS=$(TEST_SHARDS) GTEST_SHARD_INDEX=$$i \
+	    RAMUS_TEST_OUTPUT=$(CURDIR)/$(CHECK)/test-output RAMUS_BIN=$(CURDIR)/$(CHECK)/ramus \
+	    ./ramus_tests --gtest_brief=1 --gtest_output=json:$(CURDIR)/$(CHECK)/gtest-$$i.json \
+	    > gtest-$$i.log 2>&1 & pids="$$pids $$!"; \
+	  done; \
+	  for p in $$pids; do wait $$p || status=1; done; \
+	  cat gtest-*.log; exit $$status
 
 studio-e2e: check-tests
 	@node tests/studio/e2e.mjs $(CHECK)/ramus $(CHECK)/test-output

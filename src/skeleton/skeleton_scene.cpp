@@ -248,7 +248,7 @@ public:
         : skeleton_(skeleton), toGltf_(skeletonToGltf(skeleton)), world_(std::move(world)) {
         for (int k = 0; k < kBoneKindCount; ++k) {
             materials_[k] = params.material;
-            materials_[k].name += "_" + std::string(boneKindName(static_cast<BoneKind>(k)));
+            materials_[k].name.append("_").append(boneKindName(static_cast<BoneKind>(k)));
         }
     }
 
