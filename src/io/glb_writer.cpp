@@ -482,7 +482,9 @@ std::uint64_t indexHash(const std::vector<std::uint32_t>& indices, bool shortInd
 // and width is reused.
 int GlbBuilder::addIndices(const Mesh& mesh) {
     const bool shortIndices = mesh.positions.size() <= 65535;
-    const std::uint64_t hash = indexHash(mesh.indices, shortIndices);
+    // A single mesh (a tree without LODs) shares with nothing: no hash over its indices.
+    const bool shareable = scene_.meshes.size() > 1;
+    const std::uint64_t hash = shareable ? indexHash(mesh.indices, shortIndices) : 0;
     const auto [first, last] = indexViews_.equal_range(hash);
     for (auto it = first; it != last; ++it) {
         const Mesh& other = *it->second.mesh;
@@ -497,7 +499,7 @@ int GlbBuilder::addIndices(const Mesh& mesh) {
                                                             *dst++ = static_cast<std::uint16_t>(i);
                                                     })
                      : addBufferView(mesh.indices, kElementArrayBuffer);
-    indexViews_.emplace(hash, IndexView{&mesh, view});
+    if (shareable) indexViews_.emplace(hash, IndexView{&mesh, view});
     return view;
 }
 
