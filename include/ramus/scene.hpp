@@ -18,6 +18,10 @@ struct SceneNode {
     Vec3 scale = Vec3::Ones();
     int mesh = -1;           ///< index into Scene::meshes, or -1
     std::string extrasJson;  ///< a JSON object written as the node's "extras", or empty
+    /// extrasJson is a compact, valid JSON object made by a generator (e.g. a skeleton's bone
+    /// extras): the GLB writer copies it without validating it again (builds with
+    /// RAMUS_ENABLE_ASSERTS still check it). Leave false for text from anywhere else.
+    bool extrasCompact = false;
     /// Index into Scene::skins that deforms this node's mesh, or -1. A skinned node must hold a
     /// mesh with joints and weights; glTF ignores its transform, so keep it a root node with the
     /// identity transform (the validator warns otherwise).

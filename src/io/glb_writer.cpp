@@ -114,6 +114,13 @@ void writeExtras(JsonWriter& w, const std::string& text, Where where) {
     }
 }
 
+// Whether `text` is a JSON object without insignificant whitespace (what SceneNode::
+// extrasCompact promises).
+[[maybe_unused]] bool validCompactObject(const std::string& text) {
+    std::string copy;
+    return io::appendCompactJson(copy, text).empty() && copy == text && text.front() == '{';
+}
+
 // An upper bound of the BIN chunk's size (every attribute at full width, 3 bytes of alignment
 // padding per buffer view), so the chunk is allocated once.
 std::size_t binBytesBound(const Scene& scene) {
@@ -142,26 +149,56 @@ public:
     std::string_view bin() const { return {bin_.get(), binSize_}; }
 
 private:
+    // A buffer view that many accessors read, planned before any mesh is written so that its
+    // bytes lie in one range of the BIN chunk, then filled mesh by mesh. All meshes' vertex
+    // data of one element size share one view (byteStride = that size, which glTF §3.6.2.4
+    // asks of a vertex view read by several accessors), and all indices of one width share
+    // one: a scene of many small meshes (a skeleton's bones) then has a handful of views
+    // instead of five per mesh.
+    struct SharedView {
+        std::size_t bytes = 0;  // planned size
+        int view = -1;          // the glTF buffer view, once laid out
+        std::size_t start = 0;  // its first byte in the BIN chunk
+        std::size_t used = 0;   // bytes filled so far (vertex views fill in order)
+    };
+    // What the plan decided for one mesh.
+    struct MeshPlan {
+        bool drawn = false;            // has triangles (else nothing is written)
+        bool rigid = false;            // skinned with every vertex bound to one joint alone
+        bool byteJoints = true;        // JOINTS_0 as UNSIGNED_BYTE (else UNSIGNED_SHORT)
+        bool shortIndices = true;      // UNSIGNED_SHORT indices (else UNSIGNED_INT)
+        bool indicesShared = false;    // an earlier mesh wrote the same indices
+        std::size_t indexOffset = 0;   // the indices' byte offset in their index view
+        // Skins that are not rigid, normalized (normalizeSkinning).
+        std::vector<std::array<std::uint16_t, 4>> joints;
+        std::vector<Vec4f> weights;
+    };
+
     // A buffer view of `count` elements of T written by fill(T* destination), 4-byte aligned.
     // byteStride (0: none) is required when several accessors read one vertex view.
     template <typename T, typename Fill>
     int addBufferView(std::size_t count, int target, Fill fill, int byteStride = 0);
-    template <typename T>
-    int addBufferView(const std::vector<T>& data, int target) {
-        const std::size_t bytes = data.size() * sizeof(T);
-        return addBufferView<char>(
-            bytes, target, [&data, bytes](char* dst) { std::memcpy(dst, data.data(), bytes); });
-    }
     int addAccessor(int view, std::size_t byteOffset, int componentType, std::size_t count,
                     const char* type, const Vec3f* bounds = nullptr, bool normalized = false);
     int addMaterial(const Material& material);
     int addTexture(const Image& image);
-    void addVertexAttributes(const Mesh& mesh, JsonWriter& attributes);
-    void addSkinAttributes(const Mesh& mesh, JsonWriter& attributes);
-    int addIndices(const Mesh& mesh);
+    SharedView& vertexView(std::size_t elementBytes) { return vertexViews_[elementBytes / 4 - 1]; }
+    void planMesh(std::size_t m);
+    void planSkin(const Mesh& mesh, MeshPlan& plan);
+    void planIndices(std::size_t m);
+    void layOutSharedViews();
+    // An accessor of `count` vertex elements of `elementBytes` bytes (T components each), whose
+    // data fill(T* destination) writes into the shared vertex view of that element size.
+    template <typename T, typename Fill>
+    int addVertexAccessor(std::size_t count, std::size_t elementBytes, int componentType,
+                          const char* type, Fill fill, const Vec3f* bounds = nullptr,
+                          bool normalized = false);
+    void addVertexAttributes(const Mesh& mesh, const MeshPlan& plan, JsonWriter& attributes);
+    void addSkinAttributes(const Mesh& mesh, const MeshPlan& plan, JsonWriter& attributes);
+    void writeIndices(const Mesh& mesh, const MeshPlan& plan);
     int addIndexAccessor(int view, std::size_t byteOffset, bool shortIndices, std::size_t count);
     int addRigidWeights(std::size_t count);
-    int addMesh(const Mesh& mesh);
+    int addMesh(std::size_t m);
     void addNodes(const std::vector<int>& meshIndex);
     void addNode(std::size_t i, std::span<const int> children, const std::vector<int>& meshIndex);
     void addSkins();
@@ -196,19 +233,19 @@ private:
         images_{imagesText_}, textures_{texturesText_};
     int bufferViewCount_ = 0, accessorCount_ = 0, meshCount_ = 0;
     std::vector<int> roots_;
-    // Data several meshes share is written once: index buffers with equal contents (bone meshes
-    // fitted from one library model; boxes) by a hash of their values, and the rigid weights
-    // (1, 0, 0, 0) as one view of the largest rigid mesh's length that every rigid mesh's
-    // WEIGHTS_0 accessor reads from its start.
-    struct IndexView {
-        const Mesh* mesh;
-        int view;
-    };
-    std::unordered_multimap<std::uint64_t, IndexView> indexViews_;
+    std::vector<MeshPlan> plans_;  // one per scene mesh
+    std::string attributesText_;   // the current mesh's attributes object (reused)
+    // Shared views: vertex data of 4, 8, 12 and 16 bytes per element; indices by width.
+    std::array<SharedView, 4> vertexViews_;
+    SharedView shortIndexView_, intIndexView_;
+    // Index buffers with equal contents (bone meshes fitted from one library model; boxes) are
+    // written once, found by a hash of their values: hash → mesh.
+    std::unordered_multimap<std::uint64_t, std::size_t> indexOwners_;
     // (view, byte offset, count) → index accessor
     std::map<std::tuple<int, std::size_t, std::size_t>, int> indexAccessors_;
-    std::size_t rigidVertexCount_ = 0;  // longest rigid mesh
-    int rigidWeightsView_ = -1;
+    // The rigid weights (1, 0, 0, 0) are written once, as long as the longest rigid mesh, at
+    // the start of the 4-byte vertex view; every rigid mesh's WEIGHTS_0 accessor reads them.
+    std::size_t rigidVertexCount_ = 0;
     std::unordered_map<std::size_t, int> rigidWeightAccessors_;  // by vertex count
     std::vector<Material> materialKeys_;
     std::vector<const Image*> textureKeys_;  // one glTF image and texture each
@@ -347,10 +384,133 @@ int GlbBuilder::addTexture(const Image& image) {
     return static_cast<int>(textureKeys_.size()) - 1;
 }
 
+// Whether every vertex is bound to its first joint alone (weights (w, 0, 0, 0), w > 0): what
+// skeleton bones are. normalizeSkinning then gives weights (1, 0, 0, 0) and joints (j, 0, 0, 0).
+bool rigidlyBound(const Mesh& mesh) {
+    for (const Vec4f& w : mesh.weights) {
+        if (!(w[0] > 0.0f) || w[1] != 0.0f || w[2] != 0.0f || w[3] != 0.0f) return false;
+    }
+    return true;
+}
+
+// Whether the mesh draws a triangle (what drawnPrimitives returns a primitive for).
+bool hasTriangles(const Mesh& mesh) {
+    if (mesh.primitives.empty()) return !mesh.indices.empty();
+    return std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                       [](const MeshPrimitive& p) { return p.indexCount > 0; });
+}
+
+// FNV-1a over the index values and the index width.
+std::uint64_t indexHash(const std::vector<std::uint32_t>& indices, bool shortIndices) {
+    std::uint64_t h = 1469598103934665603ull ^ (shortIndices ? 1u : 0u);
+    for (std::uint32_t i : indices) h = (h ^ i) * 1099511628211ull;
+    return h;
+}
+
+// Adds mesh m's data to the shared views' planned sizes.
+void GlbBuilder::planMesh(std::size_t m) {
+    const Mesh& mesh = scene_.meshes[m];
+    MeshPlan& plan = plans_[m];
+    plan.drawn = hasTriangles(mesh);
+    if (!plan.drawn) return;
+    const std::size_t n = mesh.positions.size();
+    vertexView(12).bytes += 12 * n;
+    if (!mesh.normals.empty()) vertexView(12).bytes += 12 * n;
+    if (!mesh.tangents.empty()) vertexView(16).bytes += 16 * n;
+    if (!mesh.uvs.empty()) vertexView(8).bytes += 8 * n;
+    if (!mesh.joints.empty()) planSkin(mesh, plan);
+    for (const VertexAttribute& a : mesh.attributes) {
+        const auto bytes = static_cast<std::size_t>(4 * a.components);
+        vertexView(bytes).bytes += bytes * n;
+    }
+    planIndices(m);
+}
+
+// JOINTS_0 as UNSIGNED_BYTE when every joint index fits, else UNSIGNED_SHORT. WEIGHTS_0 as
+// normalised UNSIGNED_BYTE (1, 0, 0, 0) when every vertex is rigidly bound (255 reads back as
+// exactly 1), else as FLOAT — never a lossy quantization.
+void GlbBuilder::planSkin(const Mesh& mesh, MeshPlan& plan) {
+    const std::size_t n = mesh.joints.size();
+    plan.rigid = rigidlyBound(mesh);
+    std::uint16_t maxJoint = 0;
+    if (plan.rigid) {
+        for (const auto& j : mesh.joints) maxJoint = std::max(maxJoint, j[0]);
+        rigidVertexCount_ = std::max(rigidVertexCount_, n);
+    } else {
+        normalizeSkinning(mesh, plan.joints, plan.weights);
+        for (const auto& j : plan.joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
+        vertexView(16).bytes += 16 * n;
+    }
+    plan.byteJoints = maxJoint <= 255;
+    vertexView(plan.byteJoints ? 4 : 8).bytes += (plan.byteJoints ? 4 : 8) * n;
+}
+
+// The mesh's indices: UNSIGNED_SHORT when every index fits below 65535 (65535 is the
+// primitive restart value), else UNSIGNED_INT; an earlier mesh's with the same values and width
+// are reused.
+void GlbBuilder::planIndices(std::size_t m) {
+    const Mesh& mesh = scene_.meshes[m];
+    MeshPlan& plan = plans_[m];
+    plan.shortIndices = mesh.positions.size() <= 65535;
+    // A single mesh (a tree without LODs) shares with nothing: no hash over its indices.
+    const bool shareable = scene_.meshes.size() > 1;
+    const std::uint64_t hash = shareable ? indexHash(mesh.indices, plan.shortIndices) : 0;
+    const auto [first, last] = indexOwners_.equal_range(hash);
+    for (auto it = first; it != last; ++it) {
+        const MeshPlan& other = plans_[it->second];
+        if (other.shortIndices == plan.shortIndices &&
+            scene_.meshes[it->second].indices == mesh.indices) {
+            plan.indexOffset = other.indexOffset;
+            plan.indicesShared = true;
+            return;
+        }
+    }
+    SharedView& view = plan.shortIndices ? shortIndexView_ : intIndexView_;
+    plan.indexOffset = view.bytes;
+    view.bytes += mesh.indices.size() * (plan.shortIndices ? 2 : 4);
+    if (shareable) indexOwners_.emplace(hash, m);
+}
+
+// Gives every planned shared view its range of the BIN chunk and its glTF buffer view, and
+// writes the rigid weights.
+void GlbBuilder::layOutSharedViews() {
+    if (rigidVertexCount_ > 0) vertexView(4).bytes += 4 * rigidVertexCount_;
+    auto layOut = [this](SharedView& shared, int target, int byteStride) {
+        if (shared.bytes == 0) return;
+        shared.view = addBufferView<char>(shared.bytes, target, [](char*) {}, byteStride);
+        shared.start = binSize_ - shared.bytes;
+    };
+    for (std::size_t k = 0; k < vertexViews_.size(); ++k) {
+        layOut(vertexViews_[k], kArrayBuffer, static_cast<int>(4 * (k + 1)));
+    }
+    layOut(intIndexView_, kElementArrayBuffer, 0);
+    layOut(shortIndexView_, kElementArrayBuffer, 0);
+    SharedView& weights = vertexView(4);
+    if (rigidVertexCount_ > 0) {
+        char* dst = bin_.get() + weights.start;
+        for (std::size_t i = 0; i < 4 * rigidVertexCount_; ++i) dst[i] = i % 4 == 0 ? '\xff' : 0;
+        weights.used = 4 * rigidVertexCount_;
+    }
+}
+
+template <typename T, typename Fill>
+int GlbBuilder::addVertexAccessor(std::size_t count, std::size_t elementBytes, int componentType,
+                                  const char* type, Fill fill, const Vec3f* bounds,
+                                  bool normalized) {
+    static_assert(alignof(T) <= 4, "the BIN chunk is only 4-byte aligned");
+    SharedView& shared = vertexView(elementBytes);
+    const std::size_t offset = shared.used;
+    RAMUS_ASSERT(offset + count * elementBytes <= shared.bytes);
+    fill(reinterpret_cast<T*>(bin_.get() + shared.start + offset));
+    shared.used += count * elementBytes;
+    return addAccessor(shared.view, offset, componentType, count, type, bounds, normalized);
+}
+
 // Writes POSITION (with the min/max glTF requires), NORMAL (unit; a zero normal becomes +Y),
 // TANGENT and TEXCOORD_0 accessors shared by all primitives of the mesh into the attributes
 // object.
-void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
+void GlbBuilder::addVertexAttributes(const Mesh& mesh, const MeshPlan& plan,
+                                     JsonWriter& attributes) {
     const std::size_t n = mesh.positions.size();
     // Plain float loops: Eigen's per-vertex temporaries cost several times more here.
     float lo[3] = {mesh.positions[0].x(), mesh.positions[0].y(), mesh.positions[0].z()};
@@ -363,11 +523,17 @@ void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
         }
     }
     const Vec3f bounds[2] = {Vec3f(lo[0], lo[1], lo[2]), Vec3f(hi[0], hi[1], hi[2])};
+    auto copyOf = [](const auto& values) {
+        return [&values](char* dst) {
+            std::memcpy(dst, values.data(), values.size() * sizeof(values[0]));
+        };
+    };
     attributes.key("POSITION");
     attributes.value(
-        addAccessor(addBufferView(mesh.positions, kArrayBuffer), 0, kFloat, n, "VEC3", bounds));
+        addVertexAccessor<char>(n, 12, kFloat, "VEC3", copyOf(mesh.positions), bounds));
     if (!mesh.normals.empty()) {
-        const int view = addBufferView<float>(3 * n, kArrayBuffer, [&mesh, n](float* dst) {
+        attributes.key("NORMAL");
+        attributes.value(addVertexAccessor<float>(n, 12, kFloat, "VEC3", [&mesh, n](float* dst) {
             const float* v = mesh.normals.data()->data();
             for (std::size_t i = 0; i < 3 * n; i += 3) {
                 const float len =
@@ -377,130 +543,85 @@ void GlbBuilder::addVertexAttributes(const Mesh& mesh, JsonWriter& attributes) {
                 dst[i + 1] = usable ? v[i + 1] / len : 1.0f;
                 dst[i + 2] = usable ? v[i + 2] / len : 0.0f;
             }
-        });
-        attributes.key("NORMAL");
-        attributes.value(addAccessor(view, 0, kFloat, n, "VEC3"));
+        }));
     }
     if (!mesh.tangents.empty()) {
-        const int view = addBufferView<float>(4 * n, kArrayBuffer, [&mesh](float* dst) {
-            unitTangents(mesh.tangents, mesh.normals, dst);
-        });
         attributes.key("TANGENT");
-        attributes.value(addAccessor(view, 0, kFloat, n, "VEC4"));
+        attributes.value(addVertexAccessor<float>(n, 16, kFloat, "VEC4", [&mesh](float* dst) {
+            unitTangents(mesh.tangents, mesh.normals, dst);
+        }));
     }
     if (!mesh.uvs.empty()) {
         attributes.key("TEXCOORD_0");
-        attributes.value(addAccessor(addBufferView(mesh.uvs, kArrayBuffer), 0, kFloat, n, "VEC2"));
+        attributes.value(addVertexAccessor<char>(n, 8, kFloat, "VEC2", copyOf(mesh.uvs)));
     }
-    if (!mesh.joints.empty()) addSkinAttributes(mesh, attributes);
+    if (!mesh.joints.empty()) addSkinAttributes(mesh, plan, attributes);
     static const char* const kTypes[] = {"SCALAR", "VEC2", "VEC3", "VEC4"};
     for (const VertexAttribute& a : mesh.attributes) {
         attributes.key(a.name);
-        attributes.value(addAccessor(addBufferView(a.values, kArrayBuffer), 0, kFloat, n,
-                                     kTypes[a.components - 1]));
+        attributes.value(addVertexAccessor<char>(n, static_cast<std::size_t>(4 * a.components),
+                                                 kFloat, kTypes[a.components - 1],
+                                                 copyOf(a.values)));
     }
 }
 
-// Whether every vertex is bound to its first joint alone (weights (w, 0, 0, 0), w > 0): what
-// skeleton bones are. normalizeSkinning then gives weights (1, 0, 0, 0) and joints (j, 0, 0, 0).
-bool rigidlyBound(const Mesh& mesh) {
-    for (const Vec4f& w : mesh.weights) {
-        if (!(w[0] > 0.0f) || w[1] != 0.0f || w[2] != 0.0f || w[3] != 0.0f) return false;
-    }
-    return true;
-}
-
-// JOINTS_0 as UNSIGNED_BYTE when every joint index fits, else UNSIGNED_SHORT. WEIGHTS_0 as
-// normalised UNSIGNED_BYTE (1, 0, 0, 0) when every vertex is rigidly bound (255 reads back as
-// exactly 1), else as FLOAT — never a lossy quantization.
-void GlbBuilder::addSkinAttributes(const Mesh& mesh, JsonWriter& attributes) {
+// JOINTS_0 and WEIGHTS_0 as planSkin decided.
+void GlbBuilder::addSkinAttributes(const Mesh& mesh, const MeshPlan& plan,
+                                   JsonWriter& attributes) {
     const std::size_t n = mesh.joints.size();
-    const bool rigid = rigidlyBound(mesh);
-    std::vector<std::array<std::uint16_t, 4>> joints;
-    std::vector<Vec4f> weights;
-    if (!rigid) normalizeSkinning(mesh, joints, weights);
-    std::uint16_t maxJoint = 0;
-    if (rigid) {
-        for (const auto& j : mesh.joints) maxJoint = std::max(maxJoint, j[0]);
-    } else {
-        for (const auto& j : joints) maxJoint = std::max({maxJoint, j[0], j[1], j[2], j[3]});
-    }
     // A rigid vertex's joints are (j, 0, 0, 0); the others come normalized.
-    if (rigid) {
-        joints.resize(n, {0, 0, 0, 0});
-        for (std::size_t v = 0; v < n; ++v) joints[v][0] = mesh.joints[v][0];
-    }
-    int jointView = 0;
-    if (maxJoint <= 255) {
-        jointView = addBufferView<std::uint8_t>(4 * n, kArrayBuffer, [&joints](std::uint8_t* dst) {
-            for (const auto& j : joints) {
-                for (int k = 0; k < 4; ++k) *dst++ = static_cast<std::uint8_t>(j[k]);
-            }
-        });
-    } else {
-        jointView = addBufferView(joints, kArrayBuffer);
-    }
+    auto joint = [&](std::size_t v, int k) -> std::uint16_t {
+        if (plan.rigid) return k == 0 ? mesh.joints[v][0] : 0;
+        return plan.joints[v][k];
+    };
     attributes.key("JOINTS_0");
-    attributes.value(
-        addAccessor(jointView, 0, maxJoint <= 255 ? kUnsignedByte : kUnsignedShort, n, "VEC4"));
+    if (plan.byteJoints) {
+        attributes.value(addVertexAccessor<std::uint8_t>(
+            n, 4, kUnsignedByte, "VEC4", [&](std::uint8_t* dst) {
+                for (std::size_t v = 0; v < n; ++v) {
+                    for (int k = 0; k < 4; ++k) *dst++ = static_cast<std::uint8_t>(joint(v, k));
+                }
+            }));
+    } else {
+        attributes.value(addVertexAccessor<std::uint16_t>(
+            n, 8, kUnsignedShort, "VEC4", [&](std::uint16_t* dst) {
+                for (std::size_t v = 0; v < n; ++v) {
+                    for (int k = 0; k < 4; ++k) *dst++ = joint(v, k);
+                }
+            }));
+    }
     attributes.key("WEIGHTS_0");
-    if (rigid) {
+    if (plan.rigid) {
         attributes.value(addRigidWeights(n));
     } else {
-        attributes.value(addAccessor(addBufferView(weights, kArrayBuffer), 0, kFloat, n, "VEC4"));
+        attributes.value(addVertexAccessor<char>(n, 16, kFloat, "VEC4", [&plan](char* dst) {
+            std::memcpy(dst, plan.weights.data(), plan.weights.size() * sizeof(Vec4f));
+        }));
     }
 }
 
 // The WEIGHTS_0 accessor of `count` rigidly bound vertices: normalised UNSIGNED_BYTE (1, 0, 0, 0)
-// from the start of the one shared view.
+// from the start of the 4-byte vertex view (layOutSharedViews wrote them there).
 int GlbBuilder::addRigidWeights(std::size_t count) {
-    if (rigidWeightsView_ < 0) {
-        const std::size_t n = rigidVertexCount_;
-        rigidWeightsView_ = addBufferView<std::uint8_t>(
-            4 * n, kArrayBuffer,
-            [n](std::uint8_t* dst) {
-                for (std::size_t i = 0; i < 4 * n; ++i) dst[i] = i % 4 == 0 ? 255 : 0;
-            },
-            4);
-    }
     const auto [it, added] = rigidWeightAccessors_.try_emplace(count, -1);
     if (added) {
-        it->second = addAccessor(rigidWeightsView_, 0, kUnsignedByte, count, "VEC4", nullptr, true);
+        it->second =
+            addAccessor(vertexView(4).view, 0, kUnsignedByte, count, "VEC4", nullptr, true);
     }
     return it->second;
 }
 
-// FNV-1a over the index values and the index width.
-std::uint64_t indexHash(const std::vector<std::uint32_t>& indices, bool shortIndices) {
-    std::uint64_t h = 1469598103934665603ull ^ (shortIndices ? 1u : 0u);
-    for (std::uint32_t i : indices) h = (h ^ i) * 1099511628211ull;
-    return h;
-}
-
-// The mesh's index buffer view: UNSIGNED_SHORT when every index fits below 65535 (65535 is the
-// primitive restart value), else UNSIGNED_INT; a view of an earlier mesh with the same indices
-// and width is reused.
-int GlbBuilder::addIndices(const Mesh& mesh) {
-    const bool shortIndices = mesh.positions.size() <= 65535;
-    // A single mesh (a tree without LODs) shares with nothing: no hash over its indices.
-    const bool shareable = scene_.meshes.size() > 1;
-    const std::uint64_t hash = shareable ? indexHash(mesh.indices, shortIndices) : 0;
-    const auto [first, last] = indexViews_.equal_range(hash);
-    for (auto it = first; it != last; ++it) {
-        const Mesh& other = *it->second.mesh;
-        if ((other.positions.size() <= 65535) == shortIndices && other.indices == mesh.indices) {
-            return it->second.view;
-        }
+// The mesh's indices at their planned place (unless an earlier mesh wrote the same ones).
+void GlbBuilder::writeIndices(const Mesh& mesh, const MeshPlan& plan) {
+    if (plan.indicesShared) return;
+    const SharedView& view = plan.shortIndices ? shortIndexView_ : intIndexView_;
+    char* dst = bin_.get() + view.start + plan.indexOffset;
+    if (plan.shortIndices) {
+        auto* out = reinterpret_cast<std::uint16_t*>(dst);
+        for (std::uint32_t i : mesh.indices) *out++ = static_cast<std::uint16_t>(i);
+    } else {
+        std::memcpy(dst, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
     }
-    const int view =
-        shortIndices ? addBufferView<std::uint16_t>(mesh.indices.size(), kElementArrayBuffer,
-                                                    [&mesh](std::uint16_t* dst) {
-                                                        for (std::uint32_t i : mesh.indices)
-                                                            *dst++ = static_cast<std::uint16_t>(i);
-                                                    })
-                     : addBufferView(mesh.indices, kElementArrayBuffer);
-    if (shareable) indexViews_.emplace(hash, IndexView{&mesh, view});
-    return view;
 }
 
 // An index accessor; the same range of the same view gets the same accessor.
@@ -513,40 +634,52 @@ int GlbBuilder::addIndexAccessor(int view, std::size_t byteOffset, bool shortInd
     return it->second;
 }
 
-// One glTF mesh: shared vertex accessors, one index buffer view, one index accessor and one
-// glTF primitive per drawn MeshPrimitive. Returns -1 (nothing written) for meshes without
+// One glTF mesh: vertex accessors shared by its primitives, its indices, one index accessor and
+// one glTF primitive per drawn MeshPrimitive. Returns -1 (nothing written) for meshes without
 // triangles.
-int GlbBuilder::addMesh(const Mesh& mesh) {
-    const std::vector<MeshPrimitive> prims = io::drawnPrimitives(mesh);
-    if (prims.empty()) return -1;
-    std::string attributesText;
-    JsonWriter attributes(attributesText);
+int GlbBuilder::addMesh(std::size_t m) {
+    const Mesh& mesh = scene_.meshes[m];
+    const MeshPlan& plan = plans_[m];
+    if (!plan.drawn) return -1;
+    // The drawn primitives (io::drawnPrimitives) without copying them.
+    MeshPrimitive implicit;
+    std::span<const MeshPrimitive> prims = mesh.primitives;
+    if (prims.empty()) {
+        implicit = {0, static_cast<std::uint32_t>(mesh.indices.size()), 0, mesh.name};
+        prims = {&implicit, 1};
+    }
+    attributesText_.clear();
+    JsonWriter attributes(attributesText_);
     attributes.beginObject();
-    addVertexAttributes(mesh, attributes);
+    addVertexAttributes(mesh, plan, attributes);
     attributes.endObject();
-    const int indexView = addIndices(mesh);
-    const bool shortIndices = mesh.positions.size() <= 65535;
+    writeIndices(mesh, plan);
+    const int indexView = (plan.shortIndices ? shortIndexView_ : intIndexView_).view;
+    const std::size_t indexBytes = plan.shortIndices ? 2 : 4;
     JsonWriter& w = meshes_;
     w.beginObject();
     if (!mesh.name.empty()) writeName(w, mesh.name, "mesh", meshCount_);
     w.key("primitives");
     w.beginArray();
+    std::size_t drawn = 0;
     for (const MeshPrimitive& p : prims) {
+        if (p.indexCount == 0) continue;
         w.beginObject();
         w.key("attributes");
-        w.rawValue(attributesText);
+        w.rawValue(attributesText_);
         w.key("indices");
-        w.value(addIndexAccessor(indexView, std::size_t{p.firstIndex} * (shortIndices ? 2 : 4),
-                                 shortIndices, p.indexCount));
+        w.value(addIndexAccessor(indexView, plan.indexOffset + p.firstIndex * indexBytes,
+                                 plan.shortIndices, p.indexCount));
         w.key("material");
         w.value(addMaterial(io::primitiveMaterial(mesh, p)));
         if (!p.name.empty()) {
             w.key("extras");
             w.beginObject();
-            writeName(w, p.name, "primitive", &p - prims.data());
+            writeName(w, p.name, "primitive", drawn);
             w.endObject();
         }
         w.endObject();
+        ++drawn;
     }
     w.endArray();
     w.endObject();
@@ -620,20 +753,29 @@ void GlbBuilder::addNode(std::size_t i, std::span<const int> children,
             w.value(n.skin);
         }
     }
+    // At float precision, as readers store them (glTF's binary data are floats too); shorter
+    // and faster to write than doubles' 17 digits.
     const Eigen::Quaterniond q = n.rotation.normalized();
     if (q.coeffs() != Eigen::Quaterniond::Identity().coeffs()) {
         w.key("rotation");
-        w.numbers(q.coeffs().data(), 4);  // x, y, z, w
+        const Eigen::Vector4f xyzw = q.coeffs().cast<float>();
+        w.numbers(xyzw.data(), 4);
     }
     if (n.scale != Vec3::Ones()) {
         w.key("scale");
-        w.numbers(n.scale.data(), 3);
+        const Vec3f scale = n.scale.cast<float>();
+        w.numbers(scale.data(), 3);
     }
     if (n.translation != Vec3::Zero()) {
         w.key("translation");
-        w.numbers(n.translation.data(), 3);
+        const Vec3f translation = n.translation.cast<float>();
+        w.numbers(translation.data(), 3);
     }
-    if (!n.extrasJson.empty()) {
+    if (!n.extrasJson.empty() && n.extrasCompact) {
+        RAMUS_ASSERT(validCompactObject(n.extrasJson));
+        w.key("extras");
+        w.rawValue(n.extrasJson);
+    } else if (!n.extrasJson.empty()) {
         writeExtras(w, n.extrasJson, [&] {
             return context_ + ": node " + std::to_string(i) + " ('" + n.name + "')";
         });
@@ -735,19 +877,18 @@ void GlbBuilder::encode() {
     std::size_t extrasBytes = 0;
     for (const SceneNode& node : scene_.nodes) extrasBytes += node.extrasJson.size();
     nodesText_.reserve(extrasBytes + 160 * scene_.nodes.size());
-    // Typical sizes (a mesh has up to 6 accessors and views and one primitive), so the texts
-    // grow without repeated copies in scenes of many small meshes (one per skeleton bone).
+    // Typical sizes (a mesh has up to 6 accessors and one primitive), so the texts grow
+    // without repeated copies in scenes of many small meshes (one per skeleton bone).
     const std::size_t meshes = scene_.meshes.size();
     accessorsText_.reserve(6 * 110 * meshes);
-    bufferViewsText_.reserve(6 * 70 * meshes);
     meshesText_.reserve(220 * meshes);
-    for (const Mesh& mesh : scene_.meshes) {
-        if (!mesh.joints.empty() && rigidlyBound(mesh)) {
-            rigidVertexCount_ = std::max(rigidVertexCount_, mesh.positions.size());
-        }
-    }
-    std::vector<int> meshIndex;
-    for (const Mesh& mesh : scene_.meshes) meshIndex.push_back(addMesh(mesh));
+    plans_.resize(meshes);
+    for (std::size_t m = 0; m < meshes; ++m) planMesh(m);
+    layOutSharedViews();
+    std::vector<int> meshIndex(meshes);
+    for (std::size_t m = 0; m < meshes; ++m) meshIndex[m] = addMesh(m);
+    RAMUS_ASSERT(std::all_of(vertexViews_.begin(), vertexViews_.end(),
+                             [](const SharedView& view) { return view.used == view.bytes; }));
     addNodes(meshIndex);
     addSkins();
     alignBin();

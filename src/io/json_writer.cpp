@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <type_traits>
 
+#include "core/float_text.hpp"
 #include "ramus/error.hpp"
 
 namespace ramus::io {
@@ -252,6 +255,17 @@ std::string describe(std::string_view text, std::size_t pos) {
 }  // namespace
 
 bool appendJsonString(std::string& out, std::string_view text) {
+    // Names (the common case) need no escaping: one append, quotes included.
+    if (text.size() <= 62 &&
+        std::all_of(text.begin(), text.end(),
+                    [](char c) { return plainAscii(static_cast<unsigned char>(c)); })) {
+        char buffer[64];
+        buffer[0] = '"';
+        std::memcpy(buffer + 1, text.data(), text.size());
+        buffer[text.size() + 1] = '"';
+        out.append(buffer, text.size() + 2);
+        return true;
+    }
     const std::size_t start = out.size();
     out += '"';
     std::size_t i = 0;
@@ -309,8 +323,7 @@ bool appendJsonString(std::string& out, std::string_view text) {
 
 void appendJsonNumber(std::string& out, float value) {
     char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, result.ptr);
+    out.append(buffer, detail::writeShortest(buffer, buffer + sizeof buffer, value));
 }
 
 void appendJsonNumber(std::string& out, double value) {
@@ -333,11 +346,27 @@ std::string appendCompactJson(std::string& out, const std::string& text) {
     }
 }
 
+// Each call below appends its text, comma included, with one append: the document of a scene
+// of many small meshes (a skeleton's bones) is thousands of short keys and numbers, where
+// several appends per item cost more than formatting them.
+
 void JsonWriter::key(std::string_view name) {
-    if (needComma_) out_ += ',';
-    out_ += '"';
-    out_.append(name);
-    out_ += "\":";
+    char buffer[64];
+    if (name.size() + 4 > sizeof buffer) {
+        if (needComma_) out_ += ',';
+        out_ += '"';
+        out_.append(name);
+        out_ += "\":";
+    } else {
+        char* p = buffer;
+        if (needComma_) *p++ = ',';
+        *p++ = '"';
+        std::memcpy(p, name.data(), name.size());
+        p += name.size();
+        *p++ = '"';
+        *p++ = ':';
+        out_.append(buffer, static_cast<std::size_t>(p - buffer));
+    }
     needComma_ = false;
 }
 
@@ -353,27 +382,58 @@ void JsonWriter::value(bool flag) {
     out_ += flag ? "true" : "false";
 }
 
-void JsonWriter::value(std::int64_t number) {
-    separate();
-    char buffer[24];
-    out_.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, number).ptr);
+char* JsonWriter::separator(char* p) {
+    if (needComma_) *p++ = ',';
+    needComma_ = true;
+    return p;
 }
 
-void JsonWriter::value(std::uint64_t number) {
-    separate();
-    char buffer[24];
-    out_.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, number).ptr);
+namespace {
+// std::to_chars, with floats through writeShortest (−0 written as 0, whole numbers fast).
+template <typename T>
+char* writeNumber(char* first, char* last, T value) {
+    if constexpr (std::is_same_v<T, float>) {
+        return detail::writeShortest(first, last, value);
+    } else {
+        return std::to_chars(first, last, value).ptr;
+    }
+}
+}  // namespace
+
+template <typename T>
+void JsonWriter::number(T number) {
+    char buffer[kNumberChars];
+    char* p = separator(buffer);
+    p = writeNumber(p, buffer + sizeof buffer, number);
+    out_.append(buffer, static_cast<std::size_t>(p - buffer));
 }
 
-void JsonWriter::value(float number) {
-    separate();
-    appendJsonNumber(out_, number);
+void JsonWriter::value(std::int64_t number) { this->number(number); }
+void JsonWriter::value(std::uint64_t number) { this->number(number); }
+void JsonWriter::value(float number) { this->number(number); }
+void JsonWriter::value(double number) { this->number(number); }
+
+template <typename T>
+void JsonWriter::numberArray(const T* values, std::size_t count) {
+    constexpr std::size_t kBatch = 16;
+    char buffer[kBatch * kNumberChars + 2];
+    char* p = separator(buffer);
+    *p++ = '[';
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i > 0) *p++ = ',';
+        p = writeNumber(p, buffer + sizeof buffer, values[i]);
+        if (i % kBatch == kBatch - 1) {  // flush: room for the next kBatch numbers
+            out_.append(buffer, static_cast<std::size_t>(p - buffer));
+            p = buffer;
+        }
+    }
+    *p++ = ']';
+    out_.append(buffer, static_cast<std::size_t>(p - buffer));
 }
 
-void JsonWriter::value(double number) {
-    separate();
-    appendJsonNumber(out_, number);
-}
+template void JsonWriter::numberArray(const int*, std::size_t);
+template void JsonWriter::numberArray(const float*, std::size_t);
+template void JsonWriter::numberArray(const double*, std::size_t);
 
 std::string JsonWriter::jsonValue(const std::string& json) {
     separate();

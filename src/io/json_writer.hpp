@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -44,6 +45,21 @@ public:
 
     /// `"name":`; `name` must not need escaping (a fixed ASCII identifier).
     void key(std::string_view name);
+    /// The same for a string literal (its length known at compile time: the common case, kept
+    /// cheap because a scene of many small meshes writes thousands of keys).
+    template <std::size_t N>
+    void key(const char (&name)[N]) {
+        char buffer[N + 3];
+        char* p = buffer;
+        if (needComma_) *p++ = ',';
+        *p++ = '"';
+        std::memcpy(p, name, N - 1);
+        p += N - 1;
+        *p++ = '"';
+        *p++ = ':';
+        out_.append(buffer, static_cast<std::size_t>(p - buffer));
+        needComma_ = false;
+    }
 
     /// A string value; throws Error "… is not valid UTF-8" for invalid UTF-8.
     void value(std::string_view text);
@@ -55,12 +71,10 @@ public:
     /// Shortest round-trip text (appendJsonNumber). Precondition: finite.
     void value(float number);
     void value(double number);
-    /// An array of `count` numbers.
+    /// An array of `count` numbers (int, float or double; shortest round-trip text).
     template <typename T>
     void numbers(const T* values, std::size_t count) {
-        beginArray();
-        for (std::size_t i = 0; i < count; ++i) value(values[i]);
-        endArray();
+        numberArray(values, count);
     }
     /// A value that is already compact, valid JSON, copied as is.
     void rawValue(std::string_view json);
@@ -69,6 +83,16 @@ public:
     std::string jsonValue(const std::string& json);
 
 private:
+    // The longest number text plus a comma: a double's shortest form is at most 24 characters
+    // ("-2.2250738585072014e-308").
+    static constexpr std::size_t kNumberChars = 26;
+    // Writes the comma a value needs at p (and marks that the next one needs one).
+    char* separator(char* p);
+    template <typename T>
+    void number(T number);
+    template <typename T>
+    void numberArray(const T* values, std::size_t count);
+
     void separate() {
         if (needComma_) out_ += ',';
         needComma_ = true;

@@ -22,6 +22,19 @@ std::string meshLabel(const Mesh& mesh, std::size_t index) {
     return "mesh " + std::to_string(index) + " ('" + mesh.name + "')";
 }
 
+// Where a mesh check fails: "<context>: mesh i ('name')", built only for the message of a check
+// that fails (a scene of many small meshes — a skeleton's bones — would otherwise build a label
+// per mesh).
+struct MeshWhere {
+    const std::string& context;
+    const Mesh& mesh;
+    std::size_t index;
+};
+
+[[noreturn]] void fail(const MeshWhere& where, const std::string& what) {
+    fail(where.context + ": " + meshLabel(where.mesh, where.index), what);
+}
+
 template <typename Vec>
 bool allFinite(const Vec& v) {
     for (int i = 0; i < v.size(); ++i) {
@@ -29,6 +42,9 @@ bool allFinite(const Vec& v) {
     }
     return true;
 }
+
+// Whether the vector stays finite at float precision, as the writers store node transforms.
+bool finiteAsFloats(const Vec3& v) { return allFinite(Vec3f(v.cast<float>())); }
 
 // Whether all `count` floats are finite: a float is ±inf or NaN exactly when its exponent
 // bits are all ones. One branch-free pass that the compiler vectorizes; only a failure looks
@@ -45,7 +61,7 @@ bool allFiniteFloats(const float* values, std::size_t count) {
 
 template <typename Vec>
 void checkAttribute(const std::vector<Vec>& values, std::size_t vertexCount, const char* name,
-                    const std::string& where) {
+                    const MeshWhere& where) {
     if (!values.empty() && values.size() != vertexCount) {
         fail(where, std::string(name) + " has " + std::to_string(values.size()) +
                         " entries; expected 0 or " + std::to_string(vertexCount) +
@@ -63,7 +79,7 @@ void checkAttribute(const std::vector<Vec>& values, std::size_t vertexCount, con
     }
 }
 
-void checkMaterial(const Material& m, const std::string& where) {
+void checkMaterial(const Material& m, const MeshWhere& where) {
     auto inUnitRange = [](float v) { return std::isfinite(v) && v >= 0.0f && v <= 1.0f; };
     const char* channels[] = {"red", "green", "blue", "alpha"};
     for (int c = 0; c < 4; ++c) {
@@ -103,7 +119,7 @@ void checkMaterial(const Material& m, const std::string& where) {
 
 // Custom attributes: names glTF accepts for application-specific data, unique, 1–4 finite
 // components per vertex.
-void checkCustomAttributes(const Mesh& mesh, const std::string& where) {
+void checkCustomAttributes(const Mesh& mesh, const MeshWhere& where) {
     const std::size_t n = mesh.positions.size();
     for (std::size_t k = 0; k < mesh.attributes.size(); ++k) {
         const VertexAttribute& a = mesh.attributes[k];
@@ -134,30 +150,32 @@ void checkCustomAttributes(const Mesh& mesh, const std::string& where) {
     }
 }
 
-void checkPrimitives(const Mesh& mesh, const std::string& where) {
+void checkPrimitives(const Mesh& mesh, const MeshWhere& where) {
     const std::size_t materialCount = std::max<std::size_t>(1, mesh.materials.size());
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         const MeshPrimitive& prim = mesh.primitives[p];
-        const std::string label = "primitive " + std::to_string(p) + " ('" + prim.name + "')";
+        const auto label = [&] {
+            return "primitive " + std::to_string(p) + " ('" + prim.name + "')";
+        };
         if (prim.firstIndex % 3 != 0 || prim.indexCount % 3 != 0) {
-            fail(where, label + " covers indices " + std::to_string(prim.firstIndex) + " +" +
+            fail(where, label() + " covers indices " + std::to_string(prim.firstIndex) + " +" +
                             std::to_string(prim.indexCount) +
                             "; expected whole triangles (multiples of 3)");
         }
         if (std::uint64_t{prim.firstIndex} + prim.indexCount > mesh.indices.size()) {
-            fail(where, label + " ends at index " +
+            fail(where, label() + " ends at index " +
                             std::to_string(std::uint64_t{prim.firstIndex} + prim.indexCount) +
                             "; expected at most " + std::to_string(mesh.indices.size()));
         }
         if (prim.material >= materialCount) {
-            fail(where, label + " uses material " + std::to_string(prim.material) +
+            fail(where, label() + " uses material " + std::to_string(prim.material) +
                             "; expected < " + std::to_string(materialCount));
         }
     }
 }
 
 // Joints and weights come together; weights are finite, non-negative and sum to 1.
-void checkSkinAttributes(const Mesh& mesh, const std::string& where) {
+void checkSkinAttributes(const Mesh& mesh, const MeshWhere& where) {
     const std::size_t n = mesh.positions.size();
     checkAttribute(mesh.weights, n, "weights", where);
     if (!mesh.joints.empty() && mesh.joints.size() != n) {
@@ -179,7 +197,7 @@ void checkSkinAttributes(const Mesh& mesh, const std::string& where) {
     }
 }
 
-void checkMesh(const Mesh& mesh, const std::string& where) {
+void checkMesh(const Mesh& mesh, const MeshWhere& where) {
     const std::size_t n = mesh.positions.size();
     checkAttribute(mesh.positions, n, "positions", where);
     checkAttribute(mesh.normals, n, "normals", where);
@@ -213,7 +231,7 @@ bool nodeIsValid(const Scene& scene, std::size_t i) {
     if (node.mesh < -1 || node.mesh >= meshCount || node.skin < -1 || node.skin >= skinCount) {
         return false;
     }
-    if (!allFinite(node.translation) || !allFinite(node.scale)) return false;
+    if (!finiteAsFloats(node.translation) || !finiteAsFloats(node.scale)) return false;
     if (node.mesh >= 0 && (node.skin >= 0) == scene.meshes[node.mesh].joints.empty()) return false;
     if (node.mesh < 0 && node.skin >= 0) return false;
     const double norm = node.rotation.norm();
@@ -232,8 +250,8 @@ void checkNode(const Scene& scene, std::size_t i, const std::string& context) {
         fail(where, "mesh is " + std::to_string(node.mesh) + "; expected -1 or < " +
                         std::to_string(scene.meshes.size()));
     }
-    if (!allFinite(node.translation) || !allFinite(node.scale)) {
-        fail(where, "translation or scale is not finite");
+    if (!finiteAsFloats(node.translation) || !finiteAsFloats(node.scale)) {
+        fail(where, "translation or scale is not finite (or beyond the float range)");
     }
     if (node.skin < -1 || node.skin >= static_cast<int>(scene.skins.size())) {
         fail(where, "skin is " + std::to_string(node.skin) + "; expected -1 or < " +
@@ -347,7 +365,7 @@ void checkScene(const Scene& scene, const std::string& context) {
         }
     }
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-        checkMesh(scene.meshes[m], context + ": " + meshLabel(scene.meshes[m], m));
+        checkMesh(scene.meshes[m], MeshWhere{context, scene.meshes[m], m});
     }
 }
 

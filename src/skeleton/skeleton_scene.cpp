@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/float_text.hpp"
 #include "ramus/error.hpp"
 #include "skeleton/number_text.hpp"
 
@@ -101,8 +102,13 @@ constexpr std::array<std::uint32_t, kBoxIndices> kBoxIndexPattern = boxIndices()
 
 // ---- extras JSON -----------------------------------------------------------------------------
 
-// Shortest round-trip text; −0 is written as 0.
-void appendNumber(std::string& out, double value) { detail::appendShortest(out, value); }
+// Numbers at float precision, as glTF readers store them: the shortest text that reads back as
+// the same float (shorter and faster to write than a double's 17 digits); −0 is written as 0.
+void appendNumber(std::string& out, double value) {
+    char buffer[24];
+    const char* end = detail::writeShortest(buffer, buffer + sizeof buffer, static_cast<float>(value));
+    out.append(buffer, static_cast<std::size_t>(end - buffer));
+}
 
 void appendVector(std::string& out, const double* v, int n) {
     out += '[';
@@ -137,8 +143,12 @@ Mat3 restLocalRotation(const Bone& bone) {
     return bone.parent < 0 ? Mat3(kInternalToGltf * kBoneFromNode * rotation) : rotation;
 }
 
-void appendJoint(std::string& out, const Bone& bone) {
-    const Eigen::Quaterniond rest = canonicalQuaternion(restLocalRotation(bone));
+// nodeRotation: the node's rotation, which is the rest rotation when every joint angle is 0.
+void appendJoint(std::string& out, const Bone& bone, const Eigen::Quaterniond& nodeRotation) {
+    bool posed = false;
+    for (int i = 0; i < bone.joint.dofCount; ++i) posed = posed || bone.joint.dofs[i].angleDeg != 0.0;
+    const Eigen::Quaterniond rest =
+        posed ? canonicalQuaternion(restLocalRotation(bone)) : nodeRotation;
     const double q[4] = {rest.x(), rest.y(), rest.z(), rest.w()};
     out += "\"joint\":{\"rest_rotation\":";
     appendVector(out, q, 4);
@@ -159,7 +169,8 @@ void appendJoint(std::string& out, const Bone& bone) {
     out += "]}";
 }
 
-std::string boneExtras(const Bone& bone, double metresPerPixel) {
+std::string boneExtras(const Bone& bone, double metresPerPixel,
+                       const Eigen::Quaterniond& nodeRotation) {
     std::string out;
     out.reserve(448);
     out += '{';
@@ -167,8 +178,10 @@ std::string boneExtras(const Bone& bone, double metresPerPixel) {
     appendField(out, "side", sideName(bone.side));
     if (bone.region != SpineRegion::None) appendField(out, "region", spineRegionName(bone.region));
     if (bone.index > 0) {
+        char digits[16];
+        const char* end = std::to_chars(digits, digits + sizeof digits, bone.index).ptr;
         out += "\"index\":";
-        appendNumber(out, bone.index);
+        out.append(digits, static_cast<std::size_t>(end - digits));
         out += ',';
     }
     if (bone.limb != LimbKind::None) {
@@ -180,16 +193,16 @@ std::string boneExtras(const Bone& bone, double metresPerPixel) {
     out += "\"extents_m\":";
     appendVector(out, extents.data(), 3);
     out += ',';
-    appendJoint(out, bone);
+    appendJoint(out, bone, nodeRotation);
     out += '}';
     return out;
 }
 
 std::string sceneExtras(const Skeleton& skeleton) {
     std::string out = "{\"ground_height_px\":";
-    appendNumber(out, skeleton.groundHeight);
+    detail::appendShortest(out, skeleton.groundHeight);
     out += ",\"metres_per_pixel\":";
-    appendNumber(out, skeleton.metresPerPixel);
+    detail::appendShortest(out, skeleton.metresPerPixel);
     out += skeleton.heelContact ? ",\"heel_contact\":true}" : ",\"heel_contact\":false}";
     return out;
 }
@@ -223,7 +236,8 @@ void addJointNodes(const Skeleton& skeleton, const std::vector<Mat4>& local, Sce
             node.rotation = canonicalQuaternion(rotation);
             node.translation = s * (kBoneFromNode.transpose() * bone.joint.position);
         }
-        node.extrasJson = boneExtras(bone, s);
+        node.extrasJson = boneExtras(bone, s, node.rotation);
+        node.extrasCompact = true;
         // World matrix exactly as the file states it (Scene::worldTransform's formula).
         const Eigen::Isometry3d nodeLocal = Eigen::Translation3d(node.translation) * node.rotation;
         world[i] =
@@ -259,7 +273,7 @@ public:
     bool fit(std::size_t bone, Mesh& source) const;
 
 private:
-    // Names the mesh, binds its vertices to the joint and gives it its kind's material.
+    // Binds the mesh's vertices to the joint and gives it its kind's material.
     void finish(std::size_t bone, Mesh& mesh) const;
 
     const Skeleton& skeleton_;
@@ -271,7 +285,6 @@ private:
 void BoneMeshBuilder::finish(std::size_t bone, Mesh& mesh) const {
     const Bone& b = skeleton_.bones[bone];
     const std::size_t n = mesh.positions.size();
-    mesh.name = b.name();
     mesh.joints.assign(n, {static_cast<std::uint16_t>(bone), 0, 0, 0});
     mesh.weights.assign(n, Vec4f(1.0f, 0.0f, 0.0f, 0.0f));
     mesh.attributes.clear();
@@ -281,32 +294,24 @@ void BoneMeshBuilder::finish(std::size_t bone, Mesh& mesh) const {
                                             std::string(boneKindName(b.kind))});
 }
 
-// The same vertices as makeBox(extents) transformed, from the box's 8 transformed corners and 6
-// turned face normals.
+// The same vertices as makeBox(extents) transformed, from the box's 8 transformed corners, and
+// no normals: a box is flat-shaded, and glTF readers compute flat normals for a mesh without
+// them (glTF 2.0 §3.7.2.1: "client implementations MUST calculate flat normals"), as OBJ
+// readers do for faces without vn — the 24 unshared vertices keep every face flat even for a
+// reader that averages normals per vertex. A third less data to write per box.
 bool BoneMeshBuilder::box(std::size_t bone, Mesh& mesh) const {
     Vec3f lo, hi;
     if (!boxBounds(skeleton_.bones[bone].extents, lo, hi)) return false;
     const Mat4 m = toGltf_ * world_[bone];
     const Mat3 linear = m.topLeftCorner<3, 3>();
-    const Mat3 rotation = linear / linear.col(0).norm();  // s·R·R_b without the scale
     std::array<Vec3f, 8> corners;
     for (int c = 0; c < 8; ++c) {
         const Vec3f p((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(),
                       (c & 4) ? hi.z() : lo.z());
         corners[c] = (linear * p.cast<double>() + m.topRightCorner<3, 1>()).cast<float>();
     }
-    std::array<Vec3f, 6> faceNormals;
-    for (int f = 0; f < 6; ++f) {
-        Vec3 normal = Vec3::Zero();
-        normal[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
-        faceNormals[f] = (rotation * normal).cast<float>();
-    }
     mesh.positions.resize(kBoxVertices);
-    mesh.normals.resize(kBoxVertices);
-    for (int v = 0; v < kBoxVertices; ++v) {
-        mesh.positions[v] = corners[kBoxCornerOf[v]];
-        mesh.normals[v] = faceNormals[v / 4];
-    }
+    for (int v = 0; v < kBoxVertices; ++v) mesh.positions[v] = corners[kBoxCornerOf[v]];
     mesh.indices.assign(kBoxIndexPattern.begin(), kBoxIndexPattern.end());
     finish(bone, mesh);
     return true;
@@ -392,8 +397,10 @@ Scene skeletonToScene(const Skeleton& skeleton, const SkeletonSceneParams& param
         } else if (!builder.box(i, mesh)) {
             continue;
         }
+        mesh.name = scene.nodes[i].name;  // joint node i is bone i's
         SceneNode meshNode;
-        meshNode.name = mesh.name + "_mesh";
+        meshNode.name.reserve(mesh.name.size() + 5);
+        meshNode.name.append(mesh.name).append("_mesh");
         meshNode.mesh = static_cast<int>(scene.meshes.size());
         meshNode.skin = 0;
         scene.meshes.push_back(std::move(mesh));

@@ -1,6 +1,7 @@
 // Names of the skeleton vocabulary, joint transforms, bone names and world transforms
 // (include/ramus/skeleton.hpp; names per DESIGN.md).
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 
 #include "core/enum_names.hpp"
@@ -93,10 +94,11 @@ std::string Bone::name() const {
         result += '_';
         result += attachmentName(attachment);
     }
-    if (index > 0) {
-        char digits[16];
-        std::snprintf(digits, sizeof digits, "_%02d", index);
-        result += digits;
+    if (index > 0) {  // "_%02d"
+        char digits[16] = {'_', '0'};
+        char* first = index < 10 ? digits + 2 : digits + 1;
+        const char* end = std::to_chars(first, digits + sizeof digits, index).ptr;
+        result.append(digits, static_cast<std::size_t>(end - digits));
     }
     if (side == Side::Left) result += "_L";
     if (side == Side::Right) result += "_R";

@@ -65,10 +65,13 @@ TEST(CustomAttributes, GlbWritesThemAsFloatAccessorsUnderTheirNames) {
     EXPECT_EQ(wind["count"], 24);
     EXPECT_EQ(doc["accessors"][attributes["_ONE"].get<int>()]["type"], "SCALAR");
     // The values themselves: vertex 5, component 2 of _WIND is 52.
+    // Vertex data shares views by element size: the accessor starts at its byteOffset.
     const json& view = doc["bufferViews"][wind["bufferView"].get<int>()];
+    EXPECT_EQ(view["byteStride"], 16);
     std::uint32_t jsonLength = 0;
     std::memcpy(&jsonLength, bytes.data() + 12, 4);
-    const std::size_t bin = 20 + jsonLength + 8 + view["byteOffset"].get<std::size_t>();
+    const std::size_t bin = 20 + jsonLength + 8 + view["byteOffset"].get<std::size_t>() +
+                            wind.value("byteOffset", std::size_t{0});
     float value = 0.0f;
     std::memcpy(&value, bytes.data() + bin + (5 * 4 + 2) * 4, 4);
     EXPECT_EQ(value, 52.0f);

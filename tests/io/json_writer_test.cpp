@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "ramus/error.hpp"
@@ -87,6 +88,51 @@ TEST(JsonWriter, NumbersAreShortestAndReadBackExactly) {
     std::string extremes;
     appendJsonNumber(extremes, std::numeric_limits<double>::max());
     EXPECT_EQ(nlohmann::json::parse(extremes).get<double>(), std::numeric_limits<double>::max());
+}
+
+// Floats go through detail::writeShortest: std::to_chars's text, whole numbers by the integer
+// fast path (the same text), and −0 as "0".
+TEST(JsonWriter, FloatsAreStdToCharsTextWithNegativeZeroAsZero) {
+    auto toChars = [](float f) {
+        char buffer[32];
+        return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, f).ptr);
+    };
+    auto written = [](float f) {
+        std::string out;
+        appendJsonNumber(out, f);
+        return out;
+    };
+    for (int i = -1200; i <= 1200; ++i) {
+        const auto f = static_cast<float>(i);
+        EXPECT_EQ(written(f), toChars(f)) << i;
+        EXPECT_EQ(written(f + 0.5f), toChars(f + 0.5f)) << i;
+    }
+    EXPECT_EQ(written(-0.0f), "0");
+    EXPECT_EQ(written(999.0f), "999");
+    EXPECT_EQ(written(1e6f), toChars(1e6f));  // beyond the fast path: "1e+06"
+    Rng rng(12);
+    for (int i = 0; i < 2000; ++i) {
+        const auto f = static_cast<float>(rng.uniform(-1.0, 1.0) *
+                                          std::pow(10.0, rng.uniform(-20.0, 20.0)));
+        EXPECT_EQ(written(f), toChars(f));
+    }
+    std::string array;
+    JsonWriter w(array);
+    const float values[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.25f, 1e-8f};
+    w.numbers(values, 6);
+    EXPECT_EQ(array, "[0,0,1,-1,0.25,1e-08]");
+}
+
+// numbers() batches its text: arrays longer than one batch (16) keep every element and comma.
+TEST(JsonWriter, LongNumberArraysKeepEveryElement) {
+    std::vector<double> values;
+    for (int i = 0; i < 100; ++i) values.push_back(-std::numeric_limits<double>::max() / (i + 1));
+    std::string out;
+    JsonWriter w(out);
+    w.numbers(values.data(), values.size());
+    const nlohmann::json back = nlohmann::json::parse(out);
+    ASSERT_EQ(back.size(), values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) EXPECT_EQ(back[i].get<double>(), values[i]);
 }
 
 TEST(JsonWriter, NestsObjectsAndArraysWithCommasInTheRightPlaces) {

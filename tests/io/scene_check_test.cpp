@@ -46,7 +46,17 @@ TEST(SceneCheck, NodeMeshOutOfRangeIsRejected) {
 TEST(SceneCheck, NonFiniteTranslationIsRejected) {
     Scene scene = makeHierarchyScene();
     scene.nodes[1].translation.x() = std::nan("");
-    EXPECT_EQ(checkMessage(scene), "out.glb: node 1 ('trunk'): translation or scale is not finite");
+    EXPECT_EQ(checkMessage(scene),
+              "out.glb: node 1 ('trunk'): translation or scale is not finite (or beyond the "
+              "float range)");
+}
+
+// Writers store node transforms as floats: a double beyond the float range would become inf.
+TEST(SceneCheck, ScaleBeyondFloatRangeIsRejected) {
+    Scene scene = makeHierarchyScene();
+    scene.nodes[2].scale.y() = 1e39;
+    EXPECT_NE(checkMessage(scene).find("node 2"), std::string::npos);
+    EXPECT_NE(checkMessage(scene).find("beyond the float range"), std::string::npos);
 }
 
 TEST(SceneCheck, ZeroQuaternionIsRejected) {
