@@ -3,8 +3,13 @@
 // skeleton's ~2000 numbers make formatting a large part of writing its file.
 #pragma once
 
+#include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 namespace ramus::detail {
 
@@ -19,5 +24,43 @@ inline char* writeShortest(char* first, char* last, float value) {
     }
     return std::to_chars(first, last, value).ptr;
 }
+
+/// writeShortest with a memory: the texts of recently written floats, kept by bit pattern in a
+/// direct-mapped table (a hit copies the text instead of running std::to_chars). A mirrored
+/// skeleton writes most of its numbers more than once — twins differ in signs, rest rotations
+/// repeat node rotations — so more than half of a skeleton file's numbers hit. The text is the
+/// same with or without the cache (−x is "-" and the text of x).
+class FloatTextCache {
+public:
+    char* write(char* first, char* last, float value) {
+        const float magnitude = std::abs(value);
+        if (magnitude < 1000.0f && value == std::trunc(value)) {
+            return std::to_chars(first, last, static_cast<int>(value)).ptr;
+        }
+        const auto bits = std::bit_cast<std::uint32_t>(magnitude);
+        Entry& entry = entries_[(bits * 2654435761u) >> (32 - kSlotBits)];  // Fibonacci hashing
+        char* p = first;
+        if (value < 0.0f) *p++ = '-';
+        if (entry.length > 0 && entry.bits == bits) {
+            std::memcpy(p, entry.text, entry.length);
+            return p + entry.length;
+        }
+        char* end = std::to_chars(p, last, magnitude).ptr;
+        if (end - p > static_cast<std::ptrdiff_t>(sizeof entry.text)) return end;
+        entry.bits = bits;
+        entry.length = static_cast<std::uint8_t>(end - p);
+        std::memcpy(entry.text, p, entry.length);
+        return end;
+    }
+
+private:
+    static constexpr int kSlotBits = 10;
+    struct Entry {
+        std::uint32_t bits = 0;
+        std::uint8_t length = 0;  // 0: empty
+        char text[15];            // the longest float text without its sign has 14 characters
+    };
+    std::array<Entry, std::size_t{1} << kSlotBits> entries_{};
+};
 
 }  // namespace ramus::detail

@@ -228,9 +228,14 @@ private:
     std::size_t binCapacity_ = 0, binSize_ = 0;
     std::string bufferViewsText_, accessorsText_, materialsText_, meshesText_, nodesText_,
         skinsText_, imagesText_, texturesText_;
-    JsonWriter bufferViews_{bufferViewsText_}, accessors_{accessorsText_},
-        materials_{materialsText_}, meshes_{meshesText_}, nodes_{nodesText_}, skins_{skinsText_},
-        images_{imagesText_}, textures_{texturesText_};
+    // The texts of the floats written so far (node transforms of mirrored bones, bounds of
+    // twin meshes repeat), shared by the writers.
+    std::unique_ptr<detail::FloatTextCache> floats_ = std::make_unique<detail::FloatTextCache>();
+    JsonWriter bufferViews_{bufferViewsText_, floats_.get()},
+        accessors_{accessorsText_, floats_.get()}, materials_{materialsText_, floats_.get()},
+        meshes_{meshesText_, floats_.get()}, nodes_{nodesText_, floats_.get()},
+        skins_{skinsText_, floats_.get()}, images_{imagesText_, floats_.get()},
+        textures_{texturesText_, floats_.get()};
     int bufferViewCount_ = 0, accessorCount_ = 0, meshCount_ = 0;
     std::vector<int> roots_;
     std::vector<MeshPlan> plans_;  // one per scene mesh
@@ -575,7 +580,15 @@ void GlbBuilder::addSkinAttributes(const Mesh& mesh, const MeshPlan& plan,
         return plan.joints[v][k];
     };
     attributes.key("JOINTS_0");
-    if (plan.byteJoints) {
+    if (plan.byteJoints && plan.rigid) {  // (j, 0, 0, 0) per vertex: what bones have
+        attributes.value(addVertexAccessor<std::uint8_t>(
+            n, 4, kUnsignedByte, "VEC4", [&mesh, n](std::uint8_t* dst) {
+                std::memset(dst, 0, 4 * n);
+                for (std::size_t v = 0; v < n; ++v) {
+                    dst[4 * v] = static_cast<std::uint8_t>(mesh.joints[v][0]);
+                }
+            }));
+    } else if (plan.byteJoints) {
         attributes.value(addVertexAccessor<std::uint8_t>(
             n, 4, kUnsignedByte, "VEC4", [&](std::uint8_t* dst) {
                 for (std::size_t v = 0; v < n; ++v) {

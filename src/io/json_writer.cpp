@@ -388,17 +388,16 @@ char* JsonWriter::separator(char* p) {
     return p;
 }
 
-namespace {
-// std::to_chars, with floats through writeShortest (−0 written as 0, whole numbers fast).
+// Floats through detail::writeShortest (−0 written as 0, whole numbers fast) or the cache.
 template <typename T>
-char* writeNumber(char* first, char* last, T value) {
+char* JsonWriter::writeNumber(char* first, char* last, T value) {
     if constexpr (std::is_same_v<T, float>) {
-        return detail::writeShortest(first, last, value);
+        return floats_ != nullptr ? floats_->write(first, last, value)
+                                  : detail::writeShortest(first, last, value);
     } else {
         return std::to_chars(first, last, value).ptr;
     }
 }
-}  // namespace
 
 template <typename T>
 void JsonWriter::number(T number) {

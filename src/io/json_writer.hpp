@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/float_text.hpp"
+
 namespace ramus::io {
 
 /// Appends `text` as a JSON string literal: quotes, `"` and `\` escaped, control characters
@@ -35,8 +37,10 @@ std::string appendCompactJson(std::string& out, const std::string& text);
 /// nesting balanced.
 class JsonWriter {
 public:
-    /// Appends to `out` (not cleared; kept by reference).
-    explicit JsonWriter(std::string& out) : out_(out) {}
+    /// Appends to `out` (not cleared; kept by reference); floats through `floats` when given
+    /// (a cache shared by the writers of one document; same text either way).
+    explicit JsonWriter(std::string& out, detail::FloatTextCache* floats = nullptr)
+        : out_(out), floats_(floats) {}
 
     void beginObject() { open('{'); }
     void endObject() { close('}'); }
@@ -107,7 +111,12 @@ private:
         needComma_ = true;
     }
 
+    // std::to_chars's text; floats through the cache when there is one.
+    template <typename T>
+    char* writeNumber(char* first, char* last, T value);
+
     std::string& out_;
+    detail::FloatTextCache* floats_;
     bool needComma_ = false;
 };
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <memory>
 
 #include "core/float_text.hpp"
 #include "ramus/error.hpp"
@@ -104,17 +105,18 @@ constexpr std::array<std::uint32_t, kBoxIndices> kBoxIndexPattern = boxIndices()
 
 // Numbers at float precision, as glTF readers store them: the shortest text that reads back as
 // the same float (shorter and faster to write than a double's 17 digits); −0 is written as 0.
-void appendNumber(std::string& out, double value) {
+// `floats` remembers the texts: twins and rest rotations repeat most numbers.
+void appendNumber(std::string& out, double value, detail::FloatTextCache& floats) {
     char buffer[24];
-    const char* end = detail::writeShortest(buffer, buffer + sizeof buffer, static_cast<float>(value));
+    const char* end = floats.write(buffer, buffer + sizeof buffer, static_cast<float>(value));
     out.append(buffer, static_cast<std::size_t>(end - buffer));
 }
 
-void appendVector(std::string& out, const double* v, int n) {
+void appendVector(std::string& out, const double* v, int n, detail::FloatTextCache& floats) {
     out += '[';
     for (int i = 0; i < n; ++i) {
         if (i > 0) out += ',';
-        appendNumber(out, v[i]);
+        appendNumber(out, v[i], floats);
     }
     out += ']';
 }
@@ -144,33 +146,34 @@ Mat3 restLocalRotation(const Bone& bone) {
 }
 
 // nodeRotation: the node's rotation, which is the rest rotation when every joint angle is 0.
-void appendJoint(std::string& out, const Bone& bone, const Eigen::Quaterniond& nodeRotation) {
+void appendJoint(std::string& out, const Bone& bone, const Eigen::Quaterniond& nodeRotation,
+                 detail::FloatTextCache& floats) {
     bool posed = false;
     for (int i = 0; i < bone.joint.dofCount; ++i) posed = posed || bone.joint.dofs[i].angleDeg != 0.0;
     const Eigen::Quaterniond rest =
         posed ? canonicalQuaternion(restLocalRotation(bone)) : nodeRotation;
     const double q[4] = {rest.x(), rest.y(), rest.z(), rest.w()};
     out += "\"joint\":{\"rest_rotation\":";
-    appendVector(out, q, 4);
+    appendVector(out, q, 4, floats);
     out += ",\"dofs\":[";
     for (int i = 0; i < bone.joint.dofCount; ++i) {
         const JointDof& dof = bone.joint.dofs[i];
         const Vec3 axis = kBoneFromNode.transpose() * dof.axis.normalized();
         out += i > 0 ? ",{\"axis\":" : "{\"axis\":";
-        appendVector(out, axis.data(), 3);
+        appendVector(out, axis.data(), 3, floats);
         out += ",\"angle_deg\":";
-        appendNumber(out, dof.angleDeg);
+        appendNumber(out, dof.angleDeg, floats);
         out += ",\"min_deg\":";
-        appendNumber(out, dof.minDeg);
+        appendNumber(out, dof.minDeg, floats);
         out += ",\"max_deg\":";
-        appendNumber(out, dof.maxDeg);
+        appendNumber(out, dof.maxDeg, floats);
         out += '}';
     }
     out += "]}";
 }
 
 std::string boneExtras(const Bone& bone, double metresPerPixel,
-                       const Eigen::Quaterniond& nodeRotation) {
+                       const Eigen::Quaterniond& nodeRotation, detail::FloatTextCache& floats) {
     std::string out;
     out.reserve(448);
     out += '{';
@@ -191,9 +194,9 @@ std::string boneExtras(const Bone& bone, double metresPerPixel,
     if (bone.doubleJoint) out += "\"double_joint\":true,";
     const Vec3 extents = bone.extents * metresPerPixel;
     out += "\"extents_m\":";
-    appendVector(out, extents.data(), 3);
+    appendVector(out, extents.data(), 3, floats);
     out += ',';
-    appendJoint(out, bone, nodeRotation);
+    appendJoint(out, bone, nodeRotation, floats);
     out += '}';
     return out;
 }
@@ -220,6 +223,7 @@ void addJointNodes(const Skeleton& skeleton, const std::vector<Mat4>& local, Sce
     skin.inverseBindMatrices.reserve(n);
     scene.nodes.reserve(n + 1);
     std::vector<Mat4> world(n);
+    const auto floats = std::make_unique<detail::FloatTextCache>();
     for (std::size_t i = 0; i < n; ++i) {
         const Bone& bone = skeleton.bones[i];
         const Mat4& joint = local[i];
@@ -236,7 +240,7 @@ void addJointNodes(const Skeleton& skeleton, const std::vector<Mat4>& local, Sce
             node.rotation = canonicalQuaternion(rotation);
             node.translation = s * (kBoneFromNode.transpose() * bone.joint.position);
         }
-        node.extrasJson = boneExtras(bone, s, node.rotation);
+        node.extrasJson = boneExtras(bone, s, node.rotation, *floats);
         node.extrasCompact = true;
         // World matrix exactly as the file states it (Scene::worldTransform's formula).
         const Eigen::Isometry3d nodeLocal = Eigen::Translation3d(node.translation) * node.rotation;
