@@ -14,6 +14,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "core/text_builder.hpp"
 #include "io/json_writer.hpp"
 #include "io/scene_check.hpp"
 #include "ramus/error.hpp"
@@ -286,33 +287,23 @@ int GlbBuilder::addBufferView(std::size_t count, int target, Fill fill, int byte
 }
 
 // bounds: {min, max} (POSITION needs them) or null; normalized: integers read as [0, 1].
+// bounds: {min, max} (POSITION needs them) or null; normalized: integers read as [0, 1].
 int GlbBuilder::addAccessor(int view, std::size_t byteOffset, int componentType, std::size_t count,
                             const char* type, const Vec3f* bounds, bool normalized) {
-    JsonWriter& w = accessors_;
-    w.beginObject();
-    w.key("bufferView");
-    w.value(view);
-    if (byteOffset != 0) {
-        w.key("byteOffset");
-        w.value(std::uint64_t{byteOffset});
-    }
-    w.key("componentType");
-    w.value(componentType);
-    if (normalized) {
-        w.key("normalized");
-        w.value(true);
-    }
-    w.key("count");
-    w.value(std::uint64_t{count});
-    w.key("type");
-    w.value(type);
+    char buffer[320];  // the literals (~110), 4 integers (≤ 80), 6 floats (≤ 6·15) and commas
+    detail::TextBuilder t(buffer, buffer + sizeof buffer);
+    t.text(R"({"bufferView":)").number(static_cast<std::uint64_t>(view));
+    if (byteOffset != 0) t.text(R"(,"byteOffset":)").number(byteOffset);
+    t.text(R"(,"componentType":)").number(static_cast<std::uint64_t>(componentType));
+    if (normalized) t.text(R"(,"normalized":true)");
+    t.text(R"(,"count":)").number(count).text(R"(,"type":")").text(std::string_view(type));
+    t.text("\"");
     if (bounds != nullptr) {
-        w.key("min");
-        w.numbers(bounds[0].data(), 3);
-        w.key("max");
-        w.numbers(bounds[1].data(), 3);
+        t.text(R"(,"min":)").floats(bounds[0].data(), 3, *floats_);
+        t.text(R"(,"max":)").floats(bounds[1].data(), 3, *floats_);
     }
-    w.endObject();
+    t.text("}");
+    accessors_.rawValue(t.view());
     return accessorCount_++;
 }
 
@@ -758,32 +749,31 @@ void GlbBuilder::addNode(std::size_t i, std::span<const int> children,
         w.key("children");
         w.numbers(children.data(), children.size());
     }
+    // mesh, skin and the transform in one piece (TextBuilder). The transform at float
+    // precision, as readers store it (glTF's binary data are floats too): shorter and faster
+    // to write than doubles' 17 digits.
+    char buffer[240];  // the keys (~60), 2 integers (≤ 40), 10 floats (≤ 10·15) and commas
+    detail::TextBuilder t(buffer, buffer + sizeof buffer);
     if (n.mesh >= 0 && meshIndex[n.mesh] >= 0) {
-        w.key("mesh");
-        w.value(meshIndex[n.mesh]);
-        if (n.skin >= 0) {
-            w.key("skin");
-            w.value(n.skin);
-        }
+        t.text(R"(,"mesh":)").number(static_cast<std::uint64_t>(meshIndex[n.mesh]));
+        if (n.skin >= 0) t.text(R"(,"skin":)").number(static_cast<std::uint64_t>(n.skin));
     }
-    // At float precision, as readers store them (glTF's binary data are floats too); shorter
-    // and faster to write than doubles' 17 digits.
     const Eigen::Quaterniond q = n.rotation.normalized();
     if (q.coeffs() != Eigen::Quaterniond::Identity().coeffs()) {
-        w.key("rotation");
         const Eigen::Vector4f xyzw = q.coeffs().cast<float>();
-        w.numbers(xyzw.data(), 4);
+        t.text(R"(,"rotation":)").floats(xyzw.data(), 4, *floats_);
     }
     if (n.scale != Vec3::Ones()) {
-        w.key("scale");
         const Vec3f scale = n.scale.cast<float>();
-        w.numbers(scale.data(), 3);
+        t.text(R"(,"scale":)").floats(scale.data(), 3, *floats_);
     }
     if (n.translation != Vec3::Zero()) {
-        w.key("translation");
         const Vec3f translation = n.translation.cast<float>();
-        w.numbers(translation.data(), 3);
+        t.text(R"(,"translation":)").floats(translation.data(), 3, *floats_);
     }
+    std::string_view members = t.view();
+    if (!members.empty()) members.remove_prefix(1);  // rawMembers writes the first comma
+    w.rawMembers(members);
     if (!n.extrasJson.empty() && n.extrasCompact) {
         RAMUS_ASSERT(validCompactObject(n.extrasJson));
         w.key("extras");

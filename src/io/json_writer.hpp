@@ -82,6 +82,11 @@ public:
     }
     /// A value that is already compact, valid JSON, copied as is.
     void rawValue(std::string_view json);
+    /// Members of the open object that are already compact, valid JSON (`"a":1,"b":[2]`),
+    /// copied as they are after the comma they need; nothing for an empty text.
+    void rawMembers(std::string_view members) {
+        if (!members.empty()) rawValue(members);
+    }
     /// Validates `json` and writes it compactly (appendCompactJson); returns its error message
     /// (empty on success; on failure the document is left incomplete).
     std::string jsonValue(const std::string& json);

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/float_text.hpp"
+#include "core/text_builder.hpp"
 #include "ramus/error.hpp"
 #include "skeleton/number_text.hpp"
 
@@ -103,33 +104,6 @@ constexpr std::array<std::uint32_t, kBoxIndices> kBoxIndexPattern = boxIndices()
 
 // ---- extras JSON -----------------------------------------------------------------------------
 
-// Numbers at float precision, as glTF readers store them: the shortest text that reads back as
-// the same float (shorter and faster to write than a double's 17 digits); −0 is written as 0.
-// `floats` remembers the texts: twins and rest rotations repeat most numbers.
-void appendNumber(std::string& out, double value, detail::FloatTextCache& floats) {
-    char buffer[24];
-    const char* end = floats.write(buffer, buffer + sizeof buffer, static_cast<float>(value));
-    out.append(buffer, static_cast<std::size_t>(end - buffer));
-}
-
-void appendVector(std::string& out, const double* v, int n, detail::FloatTextCache& floats) {
-    out += '[';
-    for (int i = 0; i < n; ++i) {
-        if (i > 0) out += ',';
-        appendNumber(out, v[i], floats);
-    }
-    out += ']';
-}
-
-// "key":"value" (names from the vocabulary: no characters that need escaping).
-void appendField(std::string& out, const char* key, std::string_view value) {
-    out += '"';
-    out += key;
-    out += "\":\"";
-    out += value;
-    out += "\",";
-}
-
 // A unit quaternion of `rotation` with w ≥ 0 (q and −q are the same rotation; one sign keeps
 // the files tidy).
 Eigen::Quaterniond canonicalQuaternion(const Mat3& rotation) {
@@ -145,60 +119,58 @@ Mat3 restLocalRotation(const Bone& bone) {
     return bone.parent < 0 ? Mat3(kInternalToGltf * kBoneFromNode * rotation) : rotation;
 }
 
-// nodeRotation: the node's rotation, which is the rest rotation when every joint angle is 0.
-void appendJoint(std::string& out, const Bone& bone, const Eigen::Quaterniond& nodeRotation,
+// Numbers at float precision, as glTF readers store them: the shortest text that reads back as
+// the same float (shorter and faster to write than a double's 17 digits); −0 is written as 0.
+// `floats` remembers the texts: twins and rest rotations repeat most numbers.
+
+// "joint": rest rotation and degrees of freedom. nodeRotation: the node's rotation, which is
+// the rest rotation when every joint angle is 0.
+void appendJoint(detail::TextBuilder& t, const Bone& bone, const Eigen::Quaterniond& nodeRotation,
                  detail::FloatTextCache& floats) {
     bool posed = false;
     for (int i = 0; i < bone.joint.dofCount; ++i) posed = posed || bone.joint.dofs[i].angleDeg != 0.0;
     const Eigen::Quaterniond rest =
         posed ? canonicalQuaternion(restLocalRotation(bone)) : nodeRotation;
     const double q[4] = {rest.x(), rest.y(), rest.z(), rest.w()};
-    out += "\"joint\":{\"rest_rotation\":";
-    appendVector(out, q, 4, floats);
-    out += ",\"dofs\":[";
+    t.text(R"("joint":{"rest_rotation":)").floats(q, 4, floats).text(R"(,"dofs":[)");
     for (int i = 0; i < bone.joint.dofCount; ++i) {
         const JointDof& dof = bone.joint.dofs[i];
         const Vec3 axis = kBoneFromNode.transpose() * dof.axis.normalized();
-        out += i > 0 ? ",{\"axis\":" : "{\"axis\":";
-        appendVector(out, axis.data(), 3, floats);
-        out += ",\"angle_deg\":";
-        appendNumber(out, dof.angleDeg, floats);
-        out += ",\"min_deg\":";
-        appendNumber(out, dof.minDeg, floats);
-        out += ",\"max_deg\":";
-        appendNumber(out, dof.maxDeg, floats);
-        out += '}';
+        t.text(i > 0 ? R"(,{"axis":)" : R"({"axis":)").floats(axis.data(), 3, floats);
+        t.text(R"(,"angle_deg":)").number(static_cast<float>(dof.angleDeg), floats);
+        t.text(R"(,"min_deg":)").number(static_cast<float>(dof.minDeg), floats);
+        t.text(R"(,"max_deg":)").number(static_cast<float>(dof.maxDeg), floats).text("}");
     }
-    out += "]}";
+    t.text("]}");
+}
+
+// "key":"value", (names from the vocabulary: no characters that need escaping).
+void appendField(detail::TextBuilder& t, std::string_view key, std::string_view value) {
+    t.text("\"").text(key).text(R"(":")").text(value).text("\",");
 }
 
 std::string boneExtras(const Bone& bone, double metresPerPixel,
                        const Eigen::Quaterniond& nodeRotation, detail::FloatTextCache& floats) {
-    std::string out;
-    out.reserve(448);
-    out += '{';
-    appendField(out, "kind", boneKindName(bone.kind));
-    appendField(out, "side", sideName(bone.side));
-    if (bone.region != SpineRegion::None) appendField(out, "region", spineRegionName(bone.region));
+    // Vocabulary names (≤ 20 characters), an index, 7 + 2 · 6 floats (≤ 15 each), the keys.
+    char buffer[1024];
+    detail::TextBuilder t(buffer, buffer + sizeof buffer);
+    t.text("{");
+    appendField(t, "kind", boneKindName(bone.kind));
+    appendField(t, "side", sideName(bone.side));
+    if (bone.region != SpineRegion::None) appendField(t, "region", spineRegionName(bone.region));
     if (bone.index > 0) {
-        char digits[16];
-        const char* end = std::to_chars(digits, digits + sizeof digits, bone.index).ptr;
-        out += "\"index\":";
-        out.append(digits, static_cast<std::size_t>(end - digits));
-        out += ',';
+        t.text(R"("index":)").number(static_cast<std::uint64_t>(bone.index)).text(",");
     }
     if (bone.limb != LimbKind::None) {
-        appendField(out, "limb", limbKindName(bone.limb));
-        appendField(out, "attachment", attachmentName(bone.attachment));
+        appendField(t, "limb", limbKindName(bone.limb));
+        appendField(t, "attachment", attachmentName(bone.attachment));
     }
-    if (bone.doubleJoint) out += "\"double_joint\":true,";
+    if (bone.doubleJoint) t.text(R"("double_joint":true,)");
     const Vec3 extents = bone.extents * metresPerPixel;
-    out += "\"extents_m\":";
-    appendVector(out, extents.data(), 3, floats);
-    out += ',';
-    appendJoint(out, bone, nodeRotation, floats);
-    out += '}';
-    return out;
+    t.text(R"("extents_m":)").floats(extents.data(), 3, floats).text(",");
+    appendJoint(t, bone, nodeRotation, floats);
+    t.text("}");
+    return std::string(t.view());
 }
 
 std::string sceneExtras(const Skeleton& skeleton) {
