@@ -32,35 +32,37 @@ inline char* writeShortest(char* first, char* last, float value) {
 /// same with or without the cache (−x is "-" and the text of x).
 class FloatTextCache {
 public:
+    // User-provided, so that value-initialization (make_unique) leaves bits_ and texts_ alone.
+    FloatTextCache() {}  // NOLINT(modernize-use-equals-default)
+
     char* write(char* first, char* last, float value) {
         const float magnitude = std::abs(value);
         if (magnitude < 1000.0f && value == std::trunc(value)) {
             return std::to_chars(first, last, static_cast<int>(value)).ptr;
         }
         const auto bits = std::bit_cast<std::uint32_t>(magnitude);
-        Entry& entry = entries_[(bits * 2654435761u) >> (32 - kSlotBits)];  // Fibonacci hashing
+        const std::uint32_t slot = (bits * 2654435761u) >> (32 - kSlotBits);  // Fibonacci hashing
         char* p = first;
         if (value < 0.0f) *p++ = '-';
-        if (entry.length > 0 && entry.bits == bits) {
-            std::memcpy(p, entry.text, entry.length);
-            return p + entry.length;
+        if (lengths_[slot] > 0 && bits_[slot] == bits) {
+            std::memcpy(p, texts_[slot], lengths_[slot]);
+            return p + lengths_[slot];
         }
         char* end = std::to_chars(p, last, magnitude).ptr;
-        if (end - p > static_cast<std::ptrdiff_t>(sizeof entry.text)) return end;
-        entry.bits = bits;
-        entry.length = static_cast<std::uint8_t>(end - p);
-        std::memcpy(entry.text, p, entry.length);
+        if (end - p > static_cast<std::ptrdiff_t>(sizeof texts_[slot])) return end;
+        bits_[slot] = bits;
+        lengths_[slot] = static_cast<std::uint8_t>(end - p);
+        std::memcpy(texts_[slot], p, lengths_[slot]);
         return end;
     }
 
 private:
     static constexpr int kSlotBits = 10;
-    struct Entry {
-        std::uint32_t bits = 0;
-        std::uint8_t length = 0;  // 0: empty
-        char text[15];            // the longest float text without its sign has 14 characters
-    };
-    std::array<Entry, std::size_t{1} << kSlotBits> entries_{};
+    static constexpr std::size_t kSlots = std::size_t{1} << kSlotBits;
+    // Only the lengths start zeroed (0: empty slot), so a new cache costs 1 KB of clearing.
+    std::array<std::uint8_t, kSlots> lengths_{};
+    std::array<std::uint32_t, kSlots> bits_;
+    char texts_[kSlots][15];  // the longest float text without its sign has 14 characters
 };
 
 }  // namespace ramus::detail
