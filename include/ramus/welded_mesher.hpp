@@ -53,8 +53,8 @@ struct WeldReport {
 /// outside. Seam and cap vertices repeat ring positions bit-exactly, so welding by position
 /// gives a 2-manifold. With params.tube.windAttributes the mesh carries `_WIND`, `_WIND_PIVOT`
 /// and `_WIND_LEAF` (include/ramus/tree_wind.hpp): ring and cap vertices the values
-/// buildTubeMesh gives a ring at that point of the branch; rings of end branches absorbed into
-/// a junction those of the branch they grow out of at their start node (docs/welded.md).
+/// buildTubeMesh gives a ring at that point of the branch; rings of limbs absorbed into a
+/// junction those of the branch they grow out of at their start node (docs/welded.md).
 /// Empty tree, root only or only hidden edges → empty mesh. Deterministic.
 /// `report`, when given, receives the counts above.
 Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params = {},
