@@ -324,12 +324,6 @@ AssetSettings colonizeAssets(const ColonizeConfig& config) {
 
 AssetSettings finishAssets(AssetSettings s) {
     validateLeafParams(s.mesh.leaf);
-    if (s.mesh.weldJunctions && s.mesh.tube.windAttributes) {
-        throw Error(
-            "welded junctions (--weld, mesh.weld) and wind data (--wind, mesh.wind) together "
-            "are not supported: the welded mesher writes no wind attributes; expected one of "
-            "them");
-    }
     if (s.textures) {
         const TreeTextures& t = defaultTextures();
         Material& bark = s.mesh.tube.material;

@@ -82,7 +82,8 @@ const VertexAttribute* findAttribute(const Mesh& mesh, std::string_view name);
 /// Appends `other` to `mesh` (indices, primitives and materials re-based). Attribute arrays
 /// that one side lacks are dropped from the result unless both have them (joints and weights
 /// are kept or dropped together; custom attributes are matched by name and component count).
-/// Joint indices are copied unchanged: both meshes must refer to the same Skin.
+/// Appending a mesh without vertices changes no attribute. Joint indices are copied unchanged:
+/// both meshes must refer to the same Skin.
 void appendMesh(Mesh& mesh, const Mesh& other);
 
 /// Merges primitives that draw with the same material (sameMaterial) into one, in the order of

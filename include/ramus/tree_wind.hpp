@@ -60,6 +60,10 @@ struct WindAttributes {
     /// Vertices [first, first + count) get `sample` and the leaf pair (leafPhase, flutter).
     void set(std::size_t first, std::size_t count, const WindSample& sample, float leafPhase = 0.0f,
              float flutter = 0.0f);
+    /// Appends `count` bark vertices (leaf pair (0, 0)) with `sample`, for meshers that grow
+    /// their vertex arrays as they go.
+    void append(std::size_t count, const WindSample& sample);
+    std::size_t vertexCount() const { return pivot.size() / 3; }
     /// Appends the three attributes to mesh.attributes (sizes must match its vertex count).
     void moveInto(Mesh& mesh);
 };

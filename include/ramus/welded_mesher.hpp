@@ -51,7 +51,11 @@ struct WeldReport {
 /// tangents (w = +1), UVs (u around the ring, v along the branch, continuing through branch
 /// nodes), one primitive "bark" with params.tube.material; triangles counter-clockwise from
 /// outside. Seam and cap vertices repeat ring positions bit-exactly, so welding by position
-/// gives a 2-manifold. Empty tree, root only or only hidden edges → empty mesh. Deterministic.
+/// gives a 2-manifold. With params.tube.windAttributes the mesh carries `_WIND`, `_WIND_PIVOT`
+/// and `_WIND_LEAF` (include/ramus/tree_wind.hpp): ring and cap vertices the values
+/// buildTubeMesh gives a ring at that point of the branch; rings of limbs absorbed into a
+/// junction those of the branch they grow out of at their start node (docs/welded.md).
+/// Empty tree, root only or only hidden edges → empty mesh. Deterministic.
 /// `report`, when given, receives the counts above.
 Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params = {},
                          WeldReport* report = nullptr);

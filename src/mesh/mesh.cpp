@@ -40,12 +40,14 @@ void appendAttribute(std::vector<T>& into, const std::vector<T>& from, bool keep
     }
 }
 // Custom attributes survive an append when both sides have them (same name and width) for all
-// their vertices; an empty mesh takes the other's.
+// their vertices; an empty mesh takes the other's, and appending a mesh without vertices (e.g.
+// a tree's leaves when it has none) keeps them: there is no vertex to lack them.
 void appendCustomAttributes(Mesh& mesh, const Mesh& other, bool wasEmpty) {
     if (wasEmpty) {
         mesh.attributes = other.attributes;
         return;
     }
+    if (other.positions.empty()) return;
     const std::size_t vertexCount = mesh.positions.size();
     std::vector<VertexAttribute> kept;
     for (VertexAttribute& a : mesh.attributes) {

@@ -103,6 +103,12 @@ void WindAttributes::set(std::size_t first, std::size_t count, const WindSample&
     }
 }
 
+void WindAttributes::append(std::size_t count, const WindSample& s) {
+    const std::size_t first = vertexCount();
+    resize(first + count);
+    set(first, count, s);
+}
+
 void WindAttributes::moveInto(Mesh& mesh) {
     mesh.attributes.push_back(VertexAttribute{kWindAttribute, 4, std::move(wind)});
     mesh.attributes.push_back(VertexAttribute{kWindPivotAttribute, 3, std::move(pivot)});

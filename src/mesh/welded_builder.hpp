@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ramus/mesh.hpp"
+#include "ramus/tree_wind.hpp"
 #include "ramus/welded_mesher.hpp"
 #include "ring_frames.hpp"
 #include "welded_hull.hpp"
@@ -22,6 +23,7 @@ struct RingRecord {
     Vec3 e2 = Vec3::Zero();
     Vec3 outward = Vec3::Zero();  ///< unit, away from the junction (or the limb's direction)
     double radius = 0.0;
+    WindSample wind;  ///< of every vertex of the ring (and of caps made from it)
 };
 
 class WeldBuilder {
@@ -40,7 +42,9 @@ private:
     void gatherLimbRings(std::int32_t limb);
     void meshLimb(std::int32_t limb);
     void meshAbsorbedLimb(std::int32_t limb);
-    RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n);
+    WindSample windAt(const RingPlace& place) const;
+    RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
+                        const WindSample& wind);
     void emitSides(std::uint32_t a, std::uint32_t b, int n);
     void emitCap(const RingRecord& ring, const Vec3& normal, bool tip);
     void dropUnusedVertices();
@@ -65,6 +69,8 @@ private:
     std::vector<RingRecord> discs_;
     std::vector<LimbRing> rings_;  // rings of the limb being meshed, reused
     Mesh mesh_;
+    TreeWind wind_;  // when params.tube.windAttributes
+    WindAttributes windOut_;
     WeldReport report_;
 
     // Junction scratch, reused.

@@ -19,6 +19,20 @@
 //   side branches.
 // - Rings of limbs taken into a junction are emitted only as hull points; vertices that end
 //   up inside the hull are dropped at the end.
+// - Wind data (params.tube.windAttributes; src/mesh/tree_wind.cpp): a tube ring names the tree
+//   edge it lies on and how far along it (RingPlace::edgeNode, edgeFraction), and its vertices
+//   get TreeWind::at of that point — exactly what buildTubeMesh gives its rings there, so a
+//   ring on both meshes carries the same level, phase, distance and pivot (a junction's arm
+//   rings sit a little way out along their own limb: the side branch's ring has its level
+//   and a distance just above 0). Caps copy their ring's values, as in buildTubeMesh.
+//   Junction triangles add no vertices; only the rings of limbs absorbed into a junction need
+//   a choice: they take the values of the branch they grow out of at the limb's start node
+//   (TreeWind::at(startKey)), so the whole junction moves with its parent branch. Their own
+//   values would make a stub shorter than the junction's ring offset sway as a full side
+//   branch (relative distance up to 1) and pull the hull surface out of the parent's
+//   surface. No vertex shares its position with a vertex of another value (seam and cap
+//   copies belong to one ring), so any animation driven by these attributes keeps the
+//   surface closed.
 #include "ramus/welded_mesher.hpp"
 
 #include <algorithm>
@@ -39,6 +53,12 @@ WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
     vScale_ = 1.0 / (aspect * kPi);
     skeleton_ = buildWeldSkeleton(tree, params.tube);
     junctions_ = solveWeldJunctions(skeleton_, margin_);
+    if (params.tube.windAttributes) wind_ = TreeWind(tree, params.tube.windSeed);
+}
+
+WindSample WeldBuilder::windAt(const RingPlace& place) const {
+    if (!params_.tube.windAttributes) return {};
+    return wind_.at(place.edgeNode, place.edgeFraction);
 }
 
 const AngleTable& WeldBuilder::table(int n) {
@@ -62,10 +82,7 @@ void WeldBuilder::gatherLimbRings(std::int32_t l) {
     const double s0 = startJunction ? junctions_.startOffset[li] : 0.0;
     const double s1 = length - (endJunction ? junctions_.endOffset[li] : 0.0);
     const std::uint32_t last = limb.count - 1;
-    auto atPoint = [&](std::uint32_t k) {
-        return RingPlace{s.pointPosition[limb.first + k], pointDirection(s, limb, k),
-                         s.pointRadius[limb.first + k], s.pointArc[limb.first + k]};
-    };
+    auto atPoint = [&](std::uint32_t k) { return ringAtPoint(s, limb, k); };
     rings_.clear();
     rings_.push_back({startJunction ? ringOnLimb(s, limb, false, s0) : atPoint(0), 0.0});
     const double maxK = params_.tube.curveReduction;
@@ -104,7 +121,8 @@ void WeldBuilder::meshLimb(std::int32_t l) {
     const int n = limb.segments;
     Vec3 normal = rings_[0].place.normal;
     Vec3 e1 = initialReference(normal);
-    RingRecord previous = emitRing(rings_[0].place, e1, static_cast<float>(rings_[0].v), n);
+    RingRecord previous =
+        emitRing(rings_[0].place, e1, static_cast<float>(rings_[0].v), n, windAt(rings_[0].place));
     if (junctions_.cluster[static_cast<std::size_t>(limb.startKey)] >= 0) {
         startRing_[static_cast<std::size_t>(l)] = previous;
     } else {
@@ -117,7 +135,8 @@ void WeldBuilder::meshLimb(std::int32_t l) {
         const Vec3 direction = length > 0.0 ? Vec3(step / length) : place.normal;
         e1 = transportReference(e1, normal, direction, place.normal);
         normal = place.normal;
-        const RingRecord current = emitRing(place, e1, static_cast<float>(rings_[k].v), n);
+        const RingRecord current =
+            emitRing(place, e1, static_cast<float>(rings_[k].v), n, windAt(place));
         emitSides(previous.base, current.base, n);
         previous = current;
     }
@@ -138,6 +157,8 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
     // straight chain it would repeat it bit for bit and pinch the hull).
     const std::int32_t in = s.inLimb[static_cast<std::size_t>(limb.startKey)];
     const bool startShown = in >= 0 && junctions_.absorbed[static_cast<std::size_t>(in)];
+    // The parent branch's values at the limb's start (see the file comment).
+    const WindSample wind = params_.tube.windAttributes ? wind_.at(limb.startKey) : WindSample{};
     for (std::uint32_t k = 0; k < limb.count; ++k) {
         const std::uint32_t p = limb.first + k;
         if (k > 0) {
@@ -146,17 +167,18 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
         } else if (startShown) {
             continue;
         }
-        const RingPlace place{s.pointPosition[p], pointDirection(s, limb, k), s.pointRadius[p],
-                              s.pointArc[p]};
-        discs_.push_back(
-            emitRing(place, initialReference(place.normal), static_cast<float>(v), limb.segments));
+        const RingPlace place = ringAtPoint(s, limb, k);
+        discs_.push_back(emitRing(place, initialReference(place.normal), static_cast<float>(v),
+                                  limb.segments, wind));
     }
     keyV_[static_cast<std::size_t>(limb.endKey)] = v;
 }
 
-RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v, int n) {
+RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
+                                 const WindSample& wind) {
     const AngleTable& angles = table(n);
     RingRecord ring;
+    ring.wind = wind;
     ring.base = static_cast<std::uint32_t>(mesh_.positions.size());
     ring.n = n;
     ring.center = place.center;
@@ -178,6 +200,7 @@ RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v
         mesh_.tangents.emplace_back(tangent.x(), tangent.y(), tangent.z(), 1.0f);
         mesh_.uvs.emplace_back(angles.us[i], v);
     }
+    if (params_.tube.windAttributes) windOut_.append(angles.cosines.size(), wind);
     return ring;
 }
 
@@ -208,6 +231,7 @@ void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip) 
     }
     mesh_.normals.insert(mesh_.normals.end(), n + 1, nf);
     mesh_.tangents.insert(mesh_.tangents.end(), n + 1, tangent);
+    if (params_.tube.windAttributes) windOut_.append(n + 1, ring.wind);
     for (std::uint32_t i = 0; i < n; ++i) {
         const std::uint32_t a = centre + 1 + i;
         const std::uint32_t b = centre + 1 + (i + 1 == n ? 0 : i + 1);
@@ -215,7 +239,8 @@ void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip) 
     }
 }
 
-// Removes vertices no triangle uses (rings of absorbed limbs inside a hull), keeping order.
+// Removes vertices no triangle uses (rings of absorbed limbs inside a hull), keeping order;
+// custom attributes (wind data) are compacted with them.
 void WeldBuilder::dropUnusedVertices() {
     std::vector<std::uint32_t> remap(mesh_.positions.size(), 0);
     for (std::uint32_t i : mesh_.indices) remap[i] = 1;
@@ -227,6 +252,11 @@ void WeldBuilder::dropUnusedVertices() {
         mesh_.normals[kept] = mesh_.normals[i];
         mesh_.tangents[kept] = mesh_.tangents[i];
         mesh_.uvs[kept] = mesh_.uvs[i];
+        for (VertexAttribute& a : mesh_.attributes) {
+            const auto width = static_cast<std::size_t>(a.components);
+            std::copy_n(a.values.begin() + static_cast<std::ptrdiff_t>(width * i), width,
+                        a.values.begin() + static_cast<std::ptrdiff_t>(width * kept));
+        }
         ++kept;
     }
     for (std::uint32_t& i : mesh_.indices) i = remap[i];
@@ -234,6 +264,9 @@ void WeldBuilder::dropUnusedVertices() {
     mesh_.normals.resize(kept);
     mesh_.tangents.resize(kept);
     mesh_.uvs.resize(kept);
+    for (VertexAttribute& a : mesh_.attributes) {
+        a.values.resize(static_cast<std::size_t>(a.components) * kept);
+    }
 }
 
 Mesh WeldBuilder::build(WeldReport* report) {
@@ -270,6 +303,10 @@ Mesh WeldBuilder::build(WeldReport* report) {
     const std::size_t tubeIndices = mesh_.indices.size();
     for (NodeId cluster : junctions_.junctions) meshJunction(cluster);
     report_.junctionTriangles = (mesh_.indices.size() - tubeIndices) / 3;
+    if (params_.tube.windAttributes) {
+        RAMUS_ASSERT(windOut_.vertexCount() == mesh_.positions.size());
+        windOut_.moveInto(mesh_);
+    }
     if (junctions_.absorbedLimbs + junctions_.merges > 0) dropUnusedVertices();
     if (!mesh_.indices.empty()) {
         mesh_.materials.push_back(params_.tube.material);

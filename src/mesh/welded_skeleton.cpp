@@ -154,6 +154,17 @@ RingPlace ringOnLimb(const WeldSkeleton& s, const WeldLimb& limb, bool fromEnd, 
     place.radius = s.pointRadius[a] + u * (s.pointRadius[a + 1] - s.pointRadius[a]);
     place.normal = fromEnd ? Vec3(-direction) : direction;
     place.arc = arc;
+    place.edgeNode = s.pointNode[a + 1];
+    place.edgeFraction = u;
+    return place;
+}
+
+RingPlace ringAtPoint(const WeldSkeleton& s, const WeldLimb& limb, std::uint32_t k) {
+    const std::uint32_t p = limb.first + k;
+    RingPlace place{s.pointPosition[p], pointDirection(s, limb, k), s.pointRadius[p],
+                    s.pointArc[p]};
+    place.edgeNode = s.pointNode[k > 0 ? p : p + 1];
+    place.edgeFraction = k > 0 ? 1.0 : 0.0;
     return place;
 }
 

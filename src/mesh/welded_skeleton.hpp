@@ -50,11 +50,19 @@ struct RingPlace {
     Vec3 normal = Vec3::Zero();
     double radius = 0.0;
     double arc = 0.0;  ///< arc length from the limb's start
+    /// The tree edge the ring lies on, as the tube mesher's rings name it for their wind data
+    /// (TreeWind::at): the node the edge ends at, and the fraction along it from its parent.
+    NodeId edgeNode = kNoNode;
+    double edgeFraction = 1.0;
 };
 RingPlace ringOnLimb(const WeldSkeleton& skeleton, const WeldLimb& limb, bool fromEnd, double t);
 
 /// Unit direction of the limb at point k (k inside: bisector of its two edges).
 Vec3 pointDirection(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uint32_t k);
+
+/// The ring at limb point k (its node), facing pointDirection. Its edge is the one into the
+/// point's node (k = 0: the start of the limb's first edge), as buildTubeMesh's ring there.
+RingPlace ringAtPoint(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uint32_t k);
 
 /// Where the junction solver put things.
 struct WeldJunctions {

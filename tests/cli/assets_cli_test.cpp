@@ -2,7 +2,6 @@
 // GLB; the OBJ's texture files; the preview shows leaves; bad flags are errors.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_test_util.hpp"
@@ -18,12 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kExample = RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys";
-
-nlohmann::json glbJson(const std::string& bytes) {
-    std::uint32_t length = 0;
-    std::memcpy(&length, bytes.data() + 12, 4);
-    return nlohmann::json::parse(bytes.substr(20, length));
-}
 
 TEST(AssetsCli, LeavesWindTexturesAndLodsEndUpInTheGlb) {
     const fs::path dir = scratchDirectory("assets_glb");
@@ -56,6 +49,15 @@ TEST(AssetsCli, LeavesWindTexturesAndLodsEndUpInTheGlb) {
     for (const auto& m : doc["materials"]) masked = masked || m.value("alphaMode", "") == "MASK";
     EXPECT_TRUE(masked);
     keepForValidation(dir / "t.glb", "cli_assets_lods.glb");
+}
+
+TEST(AssetsCli, WindWithoutLeavesEndsUpInTheGlb) {
+    const fs::path dir = scratchDirectory("assets_wind_bark");
+    const CommandResult r =
+        runRamus("lsystem '" + kExample + "' -n 3 --wind -o " + (dir / "t.glb").string(), dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto doc = glbJson(readFile((dir / "t.glb").string()));
+    EXPECT_TRUE(doc["meshes"][0]["primitives"][0]["attributes"].contains("_WIND"));
 }
 
 TEST(AssetsCli, PreviewShowsGreenLeaves) {

@@ -3,8 +3,11 @@
 
 #include <sys/wait.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "ramus/file_util.hpp"
@@ -51,6 +54,13 @@ inline void keepForValidation(const std::filesystem::path& file, const std::stri
     if (!dir || !*dir) return;
     std::filesystem::copy_file(file, std::filesystem::path(dir) / name,
                                std::filesystem::copy_options::overwrite_existing);
+}
+
+/// The JSON chunk of a GLB file's bytes (the chunk's length at byte 12, its data from 20).
+inline nlohmann::json glbJson(const std::string& bytes) {
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    return nlohmann::json::parse(bytes.substr(20, length));
 }
 
 }  // namespace ramus::testing

@@ -1,10 +1,12 @@
 // `--weld` on `ramus lsystem` and `ramus colonize`: the welded mesh replaces the tubes (fewer
-// overlapping tube starts, a different triangle count), and the default stays the tubes.
+// overlapping tube starts, a different triangle count), and the default stays the tubes; with
+// `--wind` (or the config's mesh.wind) the welded bark carries the wind attributes.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_test_util.hpp"
+#include "ramus/file_util.hpp"
 
 namespace ramus::testing {
 namespace {
@@ -38,6 +40,47 @@ TEST(WeldCli, ColonizeWeldWritesAWeldedModel) {
     EXPECT_NE(welded, tubes);
     ASSERT_TRUE(fs::exists(glb));
     keepForValidation(glb, "weld_cli_fig3_2_ring.glb");
+}
+
+// Every primitive has the three wind accessors, one element per vertex.
+void expectWindInGlb(const fs::path& glb) {
+    const nlohmann::json doc = glbJson(readFile(glb.string()));
+    ASSERT_FALSE(doc["meshes"].empty());
+    for (const auto& p : doc["meshes"][0]["primitives"]) {
+        const auto& attributes = p["attributes"];
+        ASSERT_TRUE(attributes.contains("POSITION"));
+        const auto vertices = doc["accessors"][attributes["POSITION"].get<int>()]["count"];
+        for (const char* name : {"_WIND", "_WIND_PIVOT", "_WIND_LEAF"}) {
+            ASSERT_TRUE(attributes.contains(name)) << name;
+            EXPECT_EQ(doc["accessors"][attributes[name].get<int>()]["count"], vertices) << name;
+        }
+    }
+}
+
+TEST(WeldCli, LsystemWeldWithWindWritesWindAttributes) {
+    const fs::path dir = scratchDirectory("weld_wind_lsystem");
+    const std::string file = RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys";
+    const fs::path glb = dir / "welded_wind.glb";
+    const CommandResult r =
+        runRamus("lsystem " + file + " -n 4 --weld --wind --leaves -o " + glb.string(), dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    expectWindInGlb(glb);
+    keepForValidation(glb, "weld_cli_wind_tree_3d.glb");
+}
+
+TEST(WeldCli, ColonizeConfigWithWeldAndWindWritesWindAttributes) {
+    const fs::path dir = scratchDirectory("weld_wind_colonize");
+    nlohmann::json config =
+        nlohmann::json::parse(readFile(RAMUS_SOURCE_DIR "/examples/colonize/fig3_2_ring.json"));
+    config["mesh"]["weld"] = true;
+    config["mesh"]["wind"] = true;
+    const fs::path file = dir / "ring.json";
+    writeFileAtomic(file.string(), config.dump());
+    const fs::path glb = dir / "welded_wind.glb";
+    const CommandResult r = runRamus("colonize " + file.string() + " -o " + glb.string(), dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    expectWindInGlb(glb);
+    keepForValidation(glb, "weld_cli_wind_fig3_2_ring.glb");
 }
 
 }  // namespace

@@ -71,11 +71,15 @@ TEST(AppendMesh, AppendingAnEmptyMeshChangesNothing) {
     Mesh a = triangle(0, true);
     a.materials.push_back(Material{"bark"});
     a.primitives.push_back(MeshPrimitive{0, 3, 0, "bark"});
+    a.attributes.push_back(VertexAttribute{"_WIND", 4, std::vector<float>(12, 0.5f)});
     appendMesh(a, Mesh{});
     EXPECT_EQ(a.positions.size(), 3u);
     EXPECT_EQ(a.normals.size(), 3u);
     EXPECT_EQ(a.primitives.size(), 1u);
     EXPECT_EQ(a.materials.size(), 1u);
+    // Custom attributes too (bark with wind data, then a tree without leaves).
+    ASSERT_EQ(a.attributes.size(), 1u);
+    EXPECT_EQ(a.attributes[0].values.size(), 12u);
 }
 
 }  // namespace
