@@ -164,12 +164,12 @@ private:
     };
     // What the plan decided for one mesh.
     struct MeshPlan {
-        bool drawn = false;            // has triangles (else nothing is written)
-        bool rigid = false;            // skinned with every vertex bound to one joint alone
-        bool byteJoints = true;        // JOINTS_0 as UNSIGNED_BYTE (else UNSIGNED_SHORT)
-        bool shortIndices = true;      // UNSIGNED_SHORT indices (else UNSIGNED_INT)
-        bool indicesShared = false;    // an earlier mesh wrote the same indices
-        std::size_t indexOffset = 0;   // the indices' byte offset in their index view
+        bool drawn = false;           // has triangles (else nothing is written)
+        bool rigid = false;           // skinned with every vertex bound to one joint alone
+        bool byteJoints = true;       // JOINTS_0 as UNSIGNED_BYTE (else UNSIGNED_SHORT)
+        bool shortIndices = true;     // UNSIGNED_SHORT indices (else UNSIGNED_INT)
+        bool indicesShared = false;   // an earlier mesh wrote the same indices
+        std::size_t indexOffset = 0;  // the indices' byte offset in their index view
         // Skins that are not rigid, normalized (normalizeSkinning).
         std::vector<std::array<std::uint16_t, 4>> joints;
         std::vector<Vec4f> weights;
@@ -473,7 +473,8 @@ void GlbBuilder::layOutSharedViews() {
     if (rigidVertexCount_ > 0) vertexView(4).bytes += 4 * rigidVertexCount_;
     auto layOut = [this](SharedView& shared, int target, int byteStride) {
         if (shared.bytes == 0) return;
-        shared.view = addBufferView<char>(shared.bytes, target, [](char*) {}, byteStride);
+        shared.view = addBufferView<char>(
+            shared.bytes, target, [](char*) {}, byteStride);
         shared.start = binSize_ - shared.bytes;
     };
     for (std::size_t k = 0; k < vertexViews_.size(); ++k) {
@@ -562,8 +563,7 @@ void GlbBuilder::addVertexAttributes(const Mesh& mesh, const MeshPlan& plan,
 }
 
 // JOINTS_0 and WEIGHTS_0 as planSkin decided.
-void GlbBuilder::addSkinAttributes(const Mesh& mesh, const MeshPlan& plan,
-                                   JsonWriter& attributes) {
+void GlbBuilder::addSkinAttributes(const Mesh& mesh, const MeshPlan& plan, JsonWriter& attributes) {
     const std::size_t n = mesh.joints.size();
     // A rigid vertex's joints are (j, 0, 0, 0); the others come normalized.
     auto joint = [&](std::size_t v, int k) -> std::uint16_t {
@@ -580,15 +580,15 @@ void GlbBuilder::addSkinAttributes(const Mesh& mesh, const MeshPlan& plan,
                 }
             }));
     } else if (plan.byteJoints) {
-        attributes.value(addVertexAccessor<std::uint8_t>(
-            n, 4, kUnsignedByte, "VEC4", [&](std::uint8_t* dst) {
+        attributes.value(
+            addVertexAccessor<std::uint8_t>(n, 4, kUnsignedByte, "VEC4", [&](std::uint8_t* dst) {
                 for (std::size_t v = 0; v < n; ++v) {
                     for (int k = 0; k < 4; ++k) *dst++ = static_cast<std::uint8_t>(joint(v, k));
                 }
             }));
     } else {
-        attributes.value(addVertexAccessor<std::uint16_t>(
-            n, 8, kUnsignedShort, "VEC4", [&](std::uint16_t* dst) {
+        attributes.value(
+            addVertexAccessor<std::uint16_t>(n, 8, kUnsignedShort, "VEC4", [&](std::uint16_t* dst) {
                 for (std::size_t v = 0; v < n; ++v) {
                     for (int k = 0; k < 4; ++k) *dst++ = joint(v, k);
                 }

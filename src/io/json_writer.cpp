@@ -256,9 +256,9 @@ std::string describe(std::string_view text, std::size_t pos) {
 
 bool appendJsonString(std::string& out, std::string_view text) {
     // Names (the common case) need no escaping: one append, quotes included.
-    if (text.size() <= 62 &&
-        std::all_of(text.begin(), text.end(),
-                    [](char c) { return plainAscii(static_cast<unsigned char>(c)); })) {
+    if (text.size() <= 62 && std::all_of(text.begin(), text.end(), [](char c) {
+            return plainAscii(static_cast<unsigned char>(c));
+        })) {
         char buffer[64];
         buffer[0] = '"';
         std::memcpy(buffer + 1, text.data(), text.size());

@@ -128,7 +128,8 @@ Mat3 restLocalRotation(const Bone& bone) {
 void appendJoint(detail::TextBuilder& t, const Bone& bone, const Eigen::Quaterniond& nodeRotation,
                  detail::FloatTextCache& floats) {
     bool posed = false;
-    for (int i = 0; i < bone.joint.dofCount; ++i) posed = posed || bone.joint.dofs[i].angleDeg != 0.0;
+    for (int i = 0; i < bone.joint.dofCount; ++i)
+        posed = posed || bone.joint.dofs[i].angleDeg != 0.0;
     const Eigen::Quaterniond rest =
         posed ? canonicalQuaternion(restLocalRotation(bone)) : nodeRotation;
     const double q[4] = {rest.x(), rest.y(), rest.z(), rest.w()};

@@ -32,12 +32,13 @@ std::string cached(FloatTextCache& cache, float f) {
 }
 
 std::vector<float> sampleFloats() {
-    std::vector<float> values = {0.0f, -0.0f, 1.0f, -1.0f, 0.1f, 999.0f, 1000.0f, 1e6f,
-                                 1.17549435e-38f, 3.40282347e38f, 1e-45f, 0.026422560f};
+    std::vector<float> values = {0.0f,   -0.0f,       1.0f, -1.0f,           0.1f,
+                                 999.0f, 1000.0f,     1e6f, 1.17549435e-38f, 3.40282347e38f,
+                                 1e-45f, 0.026422560f};
     Rng rng(5);
     for (int i = 0; i < 3000; ++i) {
-        values.push_back(static_cast<float>(rng.uniform(-1.0, 1.0) *
-                                            std::pow(10.0, rng.uniform(-40.0, 38.0))));
+        values.push_back(
+            static_cast<float>(rng.uniform(-1.0, 1.0) * std::pow(10.0, rng.uniform(-40.0, 38.0))));
     }
     return values;
 }

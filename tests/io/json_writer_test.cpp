@@ -8,8 +8,8 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <vector>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "ramus/error.hpp"
 #include "ramus/rng.hpp"
@@ -112,8 +112,8 @@ TEST(JsonWriter, FloatsAreStdToCharsTextWithNegativeZeroAsZero) {
     EXPECT_EQ(written(1e6f), toChars(1e6f));  // beyond the fast path: "1e+06"
     Rng rng(12);
     for (int i = 0; i < 2000; ++i) {
-        const auto f = static_cast<float>(rng.uniform(-1.0, 1.0) *
-                                          std::pow(10.0, rng.uniform(-20.0, 20.0)));
+        const auto f =
+            static_cast<float>(rng.uniform(-1.0, 1.0) * std::pow(10.0, rng.uniform(-20.0, 20.0)));
         EXPECT_EQ(written(f), toChars(f));
     }
     std::string array;

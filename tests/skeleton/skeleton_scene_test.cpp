@@ -453,7 +453,8 @@ TEST(SkeletonScene, GlbSharesMaterialsIndicesAndWeightsBetweenBones) {
     EXPECT_EQ(doc["bufferViews"].size(), 4u);
     std::set<std::size_t> positionOffsets;
     for (const json& mesh : doc["meshes"]) {
-        const json& position = doc["accessors"][mesh["primitives"][0]["attributes"]["POSITION"].get<int>()];
+        const json& position =
+            doc["accessors"][mesh["primitives"][0]["attributes"]["POSITION"].get<int>()];
         positionOffsets.insert(position.value("byteOffset", std::size_t{0}));
     }
     EXPECT_EQ(positionOffsets.size(), scene.meshes.size());
