@@ -269,6 +269,18 @@ double windingNumber(const Mesh& mesh, const Vec3& p) {
     return total / (4.0 * kPi);
 }
 
+NodeId addDenseBranching(BranchTree& tree) {
+    NodeId node = tree.addRoot(Vec3::Zero(), 0.4);
+    node = tree.addChild(node, Vec3(0, 1, 0), 0.4);
+    for (int i = 0; i < 4; ++i) {
+        const double a = degToRad(137.5 * i);
+        const NodeId next = tree.addChild(node, Vec3(0, 1.1 + 0.1 * i, 0), 0.38);
+        tree.addChild(node, Vec3(1.2 * std::cos(a), 1.5 + 0.1 * i, 1.2 * std::sin(a)), 0.08);
+        node = next;
+    }
+    return tree.addChild(node, Vec3(0, 2.5, 0), 0.3);
+}
+
 void writeWeldedGlb(const Mesh& mesh, const std::string& name) {
     const char* dir = std::getenv("RAMUS_TEST_OUTPUT");
     if (dir == nullptr || *dir == '\0' || mesh.positions.empty()) return;

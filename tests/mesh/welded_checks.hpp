@@ -71,6 +71,10 @@ private:
 /// Generalized winding number of `mesh` at `p` (≈ 1 inside a closed outward mesh, 0 outside).
 double windingNumber(const Mesh& mesh, const Vec3& p);
 
+/// A thick trunk (radius 0.4) with four side branches every 0.1 of height — far closer than the
+/// trunk's radius, so their junctions merge — ending in a top at (0, 2.5, 0); returns the top.
+NodeId addDenseBranching(BranchTree& tree);
+
 /// Writes `mesh` as <$RAMUS_TEST_OUTPUT>/welded_<name>.glb when the variable is set.
 void writeWeldedGlb(const Mesh& mesh, const std::string& name);
 

@@ -186,17 +186,8 @@ TEST(WeldedMesh, HiddenEdgesSplitTheTreeIntoClosedParts) {
 }
 
 TEST(WeldedMesh, BranchNodesCloserThanTheirRingsMergeIntoOneJunction) {
-    // A thick trunk with side branches every 0.1: far closer than the trunk's radius.
     BranchTree tree;
-    NodeId node = tree.addRoot(Vec3::Zero(), 0.4);
-    node = tree.addChild(node, Vec3(0, 1, 0), 0.4);
-    for (int i = 0; i < 4; ++i) {
-        const double a = degToRad(137.5 * i);
-        const NodeId next = tree.addChild(node, Vec3(0, 1.1 + 0.1 * i, 0), 0.38);
-        tree.addChild(node, Vec3(1.2 * std::cos(a), 1.5 + 0.1 * i, 1.2 * std::sin(a)), 0.08);
-        node = next;
-    }
-    tree.addChild(node, Vec3(0, 2.5, 0), 0.3);
+    test::addDenseBranching(tree);
     WeldReport report;
     buildWeldedTreeMesh(tree, segments(8, 12), &report);
     EXPECT_GT(report.merges, 0u);

@@ -211,17 +211,8 @@ TEST(WeldedWind, MergedJunctionsAndHiddenEdgesKeepTheDataInRange) {
     // As WeldedMesh.BranchNodesCloserThanTheirRingsMergeIntoOneJunction, with a hidden edge
     // and a part above it.
     BranchTree tree;
-    NodeId node = tree.addRoot(Vec3::Zero(), 0.4);
-    node = tree.addChild(node, Vec3(0, 1, 0), 0.4);
-    for (int i = 0; i < 4; ++i) {
-        const double angle = degToRad(137.5 * i);
-        const NodeId next = tree.addChild(node, Vec3(0, 1.1 + 0.1 * i, 0), 0.38);
-        tree.addChild(node, Vec3(1.2 * std::cos(angle), 1.5 + 0.1 * i, 1.2 * std::sin(angle)),
-                      0.08);
-        node = next;
-    }
-    node = tree.addChild(node, Vec3(0, 2.5, 0), 0.3);
-    const NodeId gap = tree.addChild(node, Vec3(0, 3.0, 0), 0.3);
+    const NodeId top = test::addDenseBranching(tree);
+    const NodeId gap = tree.addChild(top, Vec3(0, 3.0, 0), 0.3);
     tree.node(gap).hidden = true;
     tree.addChild(tree.addChild(gap, Vec3(0, 4.0, 0), 0.2), Vec3(0.5, 4.5, 0), 0.1);  // trunk
     WeldReport report;
