@@ -18,10 +18,11 @@ namespace ramus::detail {
 /// written as "0". Whole numbers below 1000 in magnitude — zeros and ±1 of rotations and axes,
 /// angles in whole degrees — take an integer fast path (std::to_chars writes them as integers
 /// too). Precondition: finite.
+inline bool isSmallWholeNumber(float value) {
+    return std::abs(value) < 1000.0f && value == std::trunc(value);
+}
 inline char* writeShortest(char* first, char* last, float value) {
-    if (std::abs(value) < 1000.0f && value == std::trunc(value)) {
-        return std::to_chars(first, last, static_cast<int>(value)).ptr;
-    }
+    if (isSmallWholeNumber(value)) return std::to_chars(first, last, static_cast<int>(value)).ptr;
     return std::to_chars(first, last, value).ptr;
 }
 
@@ -36,10 +37,8 @@ public:
     FloatTextCache() {}  // NOLINT(modernize-use-equals-default)
 
     char* write(char* first, char* last, float value) {
+        if (isSmallWholeNumber(value)) return writeShortest(first, last, value);
         const float magnitude = std::abs(value);
-        if (magnitude < 1000.0f && value == std::trunc(value)) {
-            return std::to_chars(first, last, static_cast<int>(value)).ptr;
-        }
         const auto bits = std::bit_cast<std::uint32_t>(magnitude);
         const std::uint32_t slot = (bits * 2654435761u) >> (32 - kSlotBits);  // Fibonacci hashing
         char* p = first;

@@ -389,13 +389,6 @@ bool rigidlyBound(const Mesh& mesh) {
     return true;
 }
 
-// Whether the mesh draws a triangle (what drawnPrimitives returns a primitive for).
-bool hasTriangles(const Mesh& mesh) {
-    if (mesh.primitives.empty()) return !mesh.indices.empty();
-    return std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
-                       [](const MeshPrimitive& p) { return p.indexCount > 0; });
-}
-
 // FNV-1a over the index values and the index width.
 std::uint64_t indexHash(const std::vector<std::uint32_t>& indices, bool shortIndices) {
     std::uint64_t h = 1469598103934665603ull ^ (shortIndices ? 1u : 0u);
@@ -407,7 +400,7 @@ std::uint64_t indexHash(const std::vector<std::uint32_t>& indices, bool shortInd
 void GlbBuilder::planMesh(std::size_t m) {
     const Mesh& mesh = scene_.meshes[m];
     MeshPlan& plan = plans_[m];
-    plan.drawn = hasTriangles(mesh);
+    plan.drawn = io::drawsTriangles(mesh);
     if (!plan.drawn) return;
     const std::size_t n = mesh.positions.size();
     vertexView(12).bytes += 12 * n;
@@ -649,7 +642,7 @@ int GlbBuilder::addMesh(std::size_t m) {
     MeshPrimitive implicit;
     std::span<const MeshPrimitive> prims = mesh.primitives;
     if (prims.empty()) {
-        implicit = {0, static_cast<std::uint32_t>(mesh.indices.size()), 0, mesh.name};
+        implicit = io::wholeMeshPrimitive(mesh);
         prims = {&implicit, 1};
     }
     attributesText_.clear();

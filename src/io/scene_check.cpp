@@ -372,16 +372,23 @@ void checkScene(const Scene& scene, const std::string& context) {
 std::vector<MeshPrimitive> drawnPrimitives(const Mesh& mesh) {
     std::vector<MeshPrimitive> result;
     if (mesh.primitives.empty()) {
-        if (!mesh.indices.empty()) {
-            result.push_back(
-                MeshPrimitive{0, static_cast<std::uint32_t>(mesh.indices.size()), 0, mesh.name});
-        }
+        if (!mesh.indices.empty()) result.push_back(wholeMeshPrimitive(mesh));
         return result;
     }
     for (const MeshPrimitive& p : mesh.primitives) {
         if (p.indexCount > 0) result.push_back(p);
     }
     return result;
+}
+
+MeshPrimitive wholeMeshPrimitive(const Mesh& mesh) {
+    return MeshPrimitive{0, static_cast<std::uint32_t>(mesh.indices.size()), 0, mesh.name};
+}
+
+bool drawsTriangles(const Mesh& mesh) {
+    if (mesh.primitives.empty()) return !mesh.indices.empty();
+    return std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                       [](const MeshPrimitive& p) { return p.indexCount > 0; });
 }
 
 const Material& primitiveMaterial(const Mesh& mesh, const MeshPrimitive& primitive) {
@@ -392,7 +399,7 @@ const Material& primitiveMaterial(const Mesh& mesh, const MeshPrimitive& primiti
 
 std::vector<MeshInstance> meshInstances(const Scene& scene) {
     std::vector<MeshInstance> result;
-    auto drawable = [&](int m) { return !drawnPrimitives(scene.meshes[m]).empty(); };
+    auto drawable = [&](int m) { return drawsTriangles(scene.meshes[m]); };
     if (scene.nodes.empty()) {
         for (int m = 0; m < static_cast<int>(scene.meshes.size()); ++m) {
             if (drawable(m)) result.push_back(MeshInstance{-1, m, Mat4::Identity()});

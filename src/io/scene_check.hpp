@@ -25,6 +25,10 @@ void checkScene(const Scene& scene, const std::string& context);
 /// The primitives of `mesh` that draw at least one triangle, with the implicit "one primitive
 /// over all indices, material 0" made explicit. Empty when the mesh has no triangles.
 std::vector<MeshPrimitive> drawnPrimitives(const Mesh& mesh);
+/// The implicit primitive of a mesh without primitives: all indices, material 0, the mesh's name.
+MeshPrimitive wholeMeshPrimitive(const Mesh& mesh);
+/// Whether drawnPrimitives(mesh) is non-empty, without building it.
+bool drawsTriangles(const Mesh& mesh);
 
 /// The material `primitive` draws with: mesh.materials[primitive.material], or the default
 /// Material when the mesh has none.

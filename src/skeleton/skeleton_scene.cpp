@@ -119,9 +119,10 @@ Mat3 restLocalRotation(const Bone& bone) {
     return bone.parent < 0 ? Mat3(kInternalToGltf * kBoneFromNode * rotation) : rotation;
 }
 
-// Numbers at float precision, as glTF readers store them: the shortest text that reads back as
-// the same float (shorter and faster to write than a double's 17 digits); −0 is written as 0.
-// `floats` remembers the texts: twins and rest rotations repeat most numbers.
+// The extras' numbers are written at float precision, as glTF readers store them: the shortest
+// text that reads back as the same float (shorter and faster to write than a double's 17
+// digits); −0 is written as 0. `floats` remembers the texts: twins and rest rotations repeat
+// most numbers.
 
 // "joint": rest rotation and degrees of freedom. nodeRotation: the node's rotation, which is
 // the rest rotation when every joint angle is 0.
