@@ -2,6 +2,8 @@
 #include "spatial_grid.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace ramus::colonize_detail {
 
@@ -16,19 +18,34 @@ SpatialGrid::SpatialGrid(std::span<const float> xs, std::span<const float> ys,
     const Vec3 extent = box.extent();
 
     // Cells of d_i / subdivision; a margin of cells wide enough for nodes within d_i of a point.
+    // Counts are computed in doubles and only converted once they fit: a tiny radius against a
+    // huge extent (fuzzed configs) would overflow int.
+    const double limit = static_cast<double>(
+        std::min<std::size_t>(std::max<std::size_t>(maxCells, 64), std::size_t{1} << 31));
     double cell = influenceRadius / std::max(1, subdivision);
     for (;;) {
-        const int margin = static_cast<int>(std::ceil(influenceRadius / cell));
+        const double margin = std::ceil(influenceRadius / cell);
+        std::array<double, 3> counts{};
         double total = 1.0;
         for (int a = 0; a < 3; ++a) {
-            count_[a] = static_cast<int>(std::floor(extent[a] / cell)) + 1 + 2 * margin;
-            total *= count_[a];
+            counts[a] = std::floor(extent[a] / cell) + 1.0 + 2.0 * margin;
+            total *= counts[a];
         }
-        if (total <= static_cast<double>(std::max<std::size_t>(maxCells, 64))) {
+        if (total <= limit) {
+            for (int a = 0; a < 3; ++a) count_[a] = static_cast<int>(counts[a]);
             origin_ = box.min - Vec3::Constant(margin * cell);
             break;
         }
-        cell *= 1.25;
+        // Steps of 1.25 (the usual case: a few). Beyond a million times too many cells, first
+        // a jump to about a million times (the steps then take ~20 more rounds).
+        const double ratio = total / limit;
+        if (!std::isfinite(ratio)) {
+            cell *= 1e6;
+        } else if (ratio > 1e6) {
+            cell *= std::cbrt(ratio) / 100.0;
+        } else {
+            cell *= 1.25;
+        }
     }
     cellSize_ = cell;
     inverseCell_ = 1.0 / cell;

@@ -53,6 +53,18 @@ TEST(Colonize, EveryPointWithinTheKillRadiusIsRemovedInTheSameIteration) {
     }
 }
 
+// Points spread over an extent of 1e14 against an influence radius of a few units: the
+// acceleration grid grows its cells until they fit instead of overflowing its cell counts (a
+// fuzzed config found this), and growth still reaches the near points.
+TEST(Colonize, HugeExtentAgainstTheInfluenceRadiusStillGrows) {
+    std::vector<Vec3> points = {Vec3(0, 10, 0), Vec3(0, 20, 0), Vec3(0, 1e14, 0),
+                                Vec3(1e14, -1e14, 3e13)};
+    const ColonizeResult r = colonize(smallParams(), points);
+    ASSERT_EQ(r.trees.size(), 1u);
+    EXPECT_GT(r.trees[0].nodes().size(), 2u);
+    EXPECT_EQ(r.attractorsLeft, 2u);  // the far ones
+}
+
 TEST(Colonize, StopsWhenNoAttractorsRemain) {
     const std::vector<Vec3> points = {Vec3(0, 10, 0), Vec3(0, 20, 0)};
     ColonizeParams p = smallParams();
