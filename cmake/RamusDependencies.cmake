@@ -15,6 +15,14 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 find_package(Threads REQUIRED)
 
+# jemalloc (Debian libjemalloc-dev) for the ramus tool and the benchmarks: a batch of box
+# skeletons makes ~900 small allocations per skeleton (one Mesh per bone), where glibc's
+# malloc/free took 11 % of the time and jemalloc ~20 % less wall time overall (docs/BENCHMARKS.md).
+# The library itself uses whatever allocator the program that links it has.
+if(RAMUS_USE_JEMALLOC)
+  pkg_check_modules(JEMALLOC REQUIRED IMPORTED_TARGET jemalloc)
+endif()
+
 # stb (header-only, Debian libstb-dev puts headers in /usr/include/stb)
 find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb REQUIRED)
 add_library(ramus_stb INTERFACE)
