@@ -1,9 +1,11 @@
 #include "ramus/file_util.hpp"
 
 #include <fcntl.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -76,13 +78,32 @@ std::string tempSuffix(unsigned attempt) {
     return suffix;
 }
 
-// Writes all of `bytes` to `fd` (write(2) may write less than asked, or be interrupted).
-bool writeAll(int fd, std::string_view bytes) {
-    while (!bytes.empty()) {
-        const ssize_t written = ::write(fd, bytes.data(), bytes.size());
+// Writes all of `parts` to `fd` in order with writev(2), IOV_MAX pieces at a time (a GLB is a
+// dozen pieces: one system call instead of joining them in memory or writing each); writev may
+// write less than asked, or be interrupted.
+bool writeAll(int fd, std::span<const std::string_view> parts) {
+    constexpr std::size_t kBatch = 64;  // ≤ IOV_MAX (1024 on Linux)
+    std::array<iovec, kBatch> iov;
+    std::size_t next = 0, skip = 0;  // the first part not fully written, and its written bytes
+    while (next < parts.size()) {
+        std::size_t count = 0;
+        for (std::size_t i = next; i < parts.size() && count < kBatch; ++i) {
+            const std::string_view part = i == next ? parts[i].substr(skip) : parts[i];
+            if (part.empty()) continue;
+            iov[count++] = {const_cast<char*>(part.data()), part.size()};
+        }
+        if (count == 0) return true;
+        const ssize_t written = ::writev(fd, iov.data(), static_cast<int>(count));
         if (written < 0 && errno == EINTR) continue;
         if (written <= 0) return false;
-        bytes.remove_prefix(static_cast<std::size_t>(written));
+        // Advance past what was written.
+        auto left = static_cast<std::size_t>(written);
+        while (next < parts.size() && left >= parts[next].size() - skip) {
+            left -= parts[next].size() - skip;
+            ++next;
+            skip = 0;
+        }
+        skip += left;
     }
     return true;
 }
@@ -98,8 +119,7 @@ void writeFileAtomic(const std::string& path, std::span<const std::string_view> 
         if (fd < 0 && errno != EEXIST) break;
     }
     if (fd < 0) throw Error(path + ": cannot write file: " + std::strerror(errno));
-    bool ok = true;
-    for (const std::string_view bytes : parts) ok = ok && writeAll(fd, bytes);
+    bool ok = writeAll(fd, parts);
     int err = ok ? 0 : errno;
     if (::close(fd) != 0 && ok) {
         ok = false;

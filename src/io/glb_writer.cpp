@@ -11,8 +11,10 @@
 #include <map>
 #include <memory>
 #include <span>
+#include <string_view>
 #include <tuple>
 #include <unordered_map>
+#include <vector>
 
 #include "core/text_builder.hpp"
 #include "io/json_writer.hpp"
@@ -144,10 +146,11 @@ public:
     GlbBuilder(const Scene& scene, std::string context)
         : scene_(scene), context_(std::move(context)) {}
 
-    /// Checks the scene and builds the file (head() then bin()); call once.
+    /// Checks the scene and builds the file; call once.
     void encode();
-    std::string_view head() const { return head_; }
-    std::string_view bin() const { return {bin_.get(), binSize_}; }
+    /// The file, in pieces that follow each other (the large JSON arrays are not joined into
+    /// one copy: a file writer writes the pieces with one writev); valid while the builder is.
+    std::span<const std::string_view> parts() const { return parts_; }
 
 private:
     // A buffer view that many accessors read, planned before any mesh is written so that its
@@ -225,7 +228,16 @@ private:
     // The BIN chunk: allocated at binBytesBound (no zero fill; grows only for images); binSize_
     // bytes are used.
     std::unique_ptr<char[]> bin_;
-    std::string head_;
+    // The file's own bytes: the 12-byte header, the JSON chunk's header and the JSON text
+    // except the spliced arrays, the padding and the BIN chunk's header.
+    std::string glue_;
+    // Where a top-level array's elements (a text of their own) go into glue_'s text.
+    struct Splice {
+        std::size_t at;  // offset in glue_
+        const std::string* text;
+    };
+    std::vector<Splice> splices_;
+    std::vector<std::string_view> parts_;
     std::size_t binCapacity_ = 0, binSize_ = 0;
     std::string bufferViewsText_, accessorsText_, materialsText_, meshesText_, nodesText_,
         skinsText_, imagesText_, texturesText_;
@@ -254,6 +266,7 @@ private:
     std::size_t rigidVertexCount_ = 0;
     std::unordered_map<std::size_t, int> rigidWeightAccessors_;  // by vertex count
     std::vector<Material> materialKeys_;
+    std::size_t lastMaterial_ = 0;           // the material found or added last
     std::vector<const Image*> textureKeys_;  // one glTF image and texture each
 };
 
@@ -308,9 +321,14 @@ int GlbBuilder::addAccessor(int view, std::size_t byteOffset, int componentType,
 }
 
 int GlbBuilder::addMaterial(const Material& m) {
-    for (std::size_t i = 0; i < materialKeys_.size(); ++i) {
-        if (sameMaterial(materialKeys_[i], m)) return static_cast<int>(i);
+    // Meshes in a row often share their material (bones of one kind): that one first.
+    if (lastMaterial_ < materialKeys_.size() && sameMaterial(materialKeys_[lastMaterial_], m)) {
+        return static_cast<int>(lastMaterial_);
     }
+    for (std::size_t i = 0; i < materialKeys_.size(); ++i) {
+        if (sameMaterial(materialKeys_[i], m)) return static_cast<int>(lastMaterial_ = i);
+    }
+    lastMaterial_ = materialKeys_.size();
     materialKeys_.push_back(m);
     JsonWriter& w = materials_;
     w.beginObject();
@@ -845,7 +863,7 @@ void GlbBuilder::writeDocument(std::string& out) {
         if (text->empty()) continue;
         w.key(name);
         w.beginArray();
-        w.rawValue(*text);  // the elements, comma-separated
+        splices_.push_back({out.size(), text});  // the elements, comma-separated
         w.endArray();
     }
     if (!textureKeys_.empty()) {
@@ -889,24 +907,39 @@ void GlbBuilder::encode() {
     addSkins();
     alignBin();
 
-    // Header and JSON chunk header first (lengths filled in below), the JSON text, then BIN's
-    // chunk header.
-    head_.reserve(20 + 256 + bufferViewsText_.size() + accessorsText_.size() +
-                  materialsText_.size() + meshesText_.size() + nodesText_.size() +
-                  skinsText_.size() + scene_.extrasJson.size() + 8 * roots_.size() +
+    // Header and JSON chunk header first (lengths filled in below), the JSON text with the
+    // arrays spliced in, padding, then BIN's chunk header and BIN.
+    glue_.reserve(20 + 256 + scene_.extrasJson.size() + 8 * roots_.size() +
                   scene_.generator.size() + 3 + 8);
-    head_.resize(20);
-    writeDocument(head_);
-    head_.resize((head_.size() + 3) & ~std::size_t{3}, ' ');
-    const std::size_t jsonBytes = head_.size() - 20;
-    const std::size_t total = head_.size() + (binSize_ == 0 ? 0 : 8 + binSize_);
+    glue_.resize(20);
+    writeDocument(glue_);
+    std::size_t jsonBytes = glue_.size() - 20;
+    for (const Splice& splice : splices_) jsonBytes += splice.text->size();
+    const std::size_t padding = (4 - jsonBytes % 4) % 4;
+    glue_.append(padding, ' ');
+    jsonBytes += padding;
+    const std::size_t jsonEnd = glue_.size();
+    const std::size_t total = 20 + jsonBytes + (binSize_ == 0 ? 0 : 8 + binSize_);
     if (total > 0xFFFFFFFFu) throw Error(context_ + ": scene is too large for a GLB (> 4 GiB)");
     const std::uint32_t header[5] = {kGlbMagic, 2, static_cast<std::uint32_t>(total),
                                      static_cast<std::uint32_t>(jsonBytes), kChunkJson};
-    std::memcpy(head_.data(), header, sizeof header);
+    std::memcpy(glue_.data(), header, sizeof header);
     if (binSize_ != 0) {
         const std::uint32_t binHeader[2] = {static_cast<std::uint32_t>(binSize_), kChunkBin};
-        head_.append(reinterpret_cast<const char*>(binHeader), sizeof binHeader);
+        glue_.append(reinterpret_cast<const char*>(binHeader), sizeof binHeader);
+    }
+    // glue_ is complete: views into it stay valid from here on.
+    const std::string_view glue = glue_;
+    std::size_t from = 0;
+    for (const Splice& splice : splices_) {
+        parts_.push_back(glue.substr(from, splice.at - from));
+        parts_.push_back(*splice.text);
+        from = splice.at;
+    }
+    parts_.push_back(glue.substr(from, jsonEnd - from));
+    if (binSize_ != 0) {
+        parts_.push_back(glue.substr(jsonEnd));
+        parts_.push_back({bin_.get(), binSize_});
     }
 }
 
@@ -916,17 +949,17 @@ std::string encodeGlb(const Scene& scene) {
     GlbBuilder builder(scene, "scene");
     builder.encode();
     std::string out;
-    out.reserve(builder.head().size() + builder.bin().size());
-    out += builder.head();
-    out += builder.bin();
+    std::size_t bytes = 0;
+    for (const std::string_view part : builder.parts()) bytes += part.size();
+    out.reserve(bytes);
+    for (const std::string_view part : builder.parts()) out += part;
     return out;
 }
 
 void writeGlb(const Scene& scene, const std::string& path) {
     GlbBuilder builder(scene, path);
     builder.encode();
-    const std::string_view parts[] = {builder.head(), builder.bin()};
-    writeFileAtomic(path, parts);
+    writeFileAtomic(path, builder.parts());
 }
 
 }  // namespace ramus

@@ -18,8 +18,8 @@ namespace ramus::io {
 /// U+10FFFF are invalid).
 bool appendJsonString(std::string& out, std::string_view text);
 
-/// Appends the shortest decimal text that reads back as the same float (std::to_chars), e.g.
-/// "0.1", "-2", "1e-08". Precondition: finite.
+/// Appends a short decimal text that reads back as the same float (detail::writeShortest),
+/// e.g. "0.1", "-2", "1e-8". Precondition: finite.
 void appendJsonNumber(std::string& out, float value);
 /// The same for doubles. Precondition: finite.
 void appendJsonNumber(std::string& out, double value);
@@ -72,7 +72,7 @@ public:
     void value(int number) { value(static_cast<std::int64_t>(number)); }
     void value(std::int64_t number);
     void value(std::uint64_t number);
-    /// Shortest round-trip text (appendJsonNumber). Precondition: finite.
+    /// Short round-trip text (appendJsonNumber). Precondition: finite.
     void value(float number);
     void value(double number);
     /// An array of `count` numbers (int, float or double; shortest round-trip text).

@@ -1,6 +1,9 @@
-// Float text for JSON (src/core/float_text.hpp): writeShortest is std::to_chars's shortest
-// round-trip text (−0 as "0"), and FloatTextCache writes exactly the same text with or without
-// hits — for repeated values, their negations and values whose slots collide.
+// Float text for JSON (src/core/float_text.hpp): writeShortFloat's text reads back as the same
+// float (strtof, correctly rounded) and is never longer than std::to_chars's shortest text by
+// more than one digit, and nearly always as short; writeShortest adds integers for small whole
+// numbers and "0" for −0; FloatTextCache writes exactly the same text with or without hits —
+// for repeated values, their negations and values whose slots collide. (Every one of the 2^32
+// floats was checked once against strtof with a throwaway program: docs/BENCHMARKS.md.)
 #include "core/float_text.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +11,7 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -43,14 +47,91 @@ std::vector<float> sampleFloats() {
     return values;
 }
 
-TEST(FloatText, ShortestIsStdToCharsWithNegativeZeroAsZero) {
+std::string shortFloat(float f) {
+    char buffer[32];
+    return std::string(buffer, writeShortFloat(buffer, f));
+}
+
+// Reads back as f; returns whether it is longer than std::to_chars's shortest text (which a
+// decimal exactly halfway between two floats can be: strtof's ties-to-even reads it as f, the
+// formatter keeps strictly inside half an ulp).
+bool expectShortRoundTrip(float f) {
+    const std::string text = shortFloat(f);
+    const float back = std::strtof(text.c_str(), nullptr);
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(back), std::bit_cast<std::uint32_t>(f))
+        << text << " for " << toChars(f);
+    EXPECT_LE(text.size(), toChars(f).size() + 3) << text << " for " << toChars(f);
+    return text.size() > toChars(f).size();
+}
+
+TEST(FloatText, ShortFloatsReadBackAsTheSameFloat) {
     for (float f : sampleFloats()) {
-        if (f == 0.0f) continue;
-        EXPECT_EQ(shortest(f), toChars(f));
+        if (f != 0.0f && std::fpclassify(f) == FP_NORMAL) expectShortRoundTrip(f);
     }
+    // Every power of two (their lower neighbour is half as far), the binades' last floats, and
+    // the values next to powers of ten (where rounding carries: 9.9999999 → 10).
+    for (int e = -126; e <= 127; ++e) {
+        const float p = std::ldexp(1.0f, e);
+        expectShortRoundTrip(p);
+        expectShortRoundTrip(-p);
+        expectShortRoundTrip(std::nextafter(p, 0.0f));
+        expectShortRoundTrip(std::nextafter(p, INFINITY));
+    }
+    for (int e = -37; e <= 38; ++e) {
+        float p = static_cast<float>(std::pow(10.0, e));
+        for (int k = 0; k < 40; ++k) {
+            expectShortRoundTrip(p);
+            p = std::nextafter(p, 0.0f);
+        }
+        p = static_cast<float>(std::pow(10.0, e));
+        for (int k = 0; k < 40; ++k) {
+            expectShortRoundTrip(p);
+            p = std::nextafter(p, INFINITY);
+        }
+    }
+    // Every float in [1, 1 + 2^-7) and in a band around 0.1.
+    for (std::uint32_t bits = 0x3F800000u; bits < 0x3F810000u; ++bits) {
+        expectShortRoundTrip(std::bit_cast<float>(bits));
+    }
+    for (std::uint32_t bits = 0x3DCC0000u; bits < 0x3DCD0000u; ++bits) {
+        expectShortRoundTrip(std::bit_cast<float>(bits));
+    }
+    Rng rng(9);
+    int longer = 0;
+    for (int i = 0; i < 200000; ++i) {  // random bit patterns: all exponents alike
+        const auto bits = static_cast<std::uint32_t>(rng.uniform(0.0, 4294967296.0));
+        const float f = std::bit_cast<float>(bits);
+        if (std::fpclassify(f) == FP_NORMAL) longer += expectShortRoundTrip(f) ? 1 : 0;
+    }
+    EXPECT_LT(longer, 20);  // measured: 2 in 3 million
+}
+
+TEST(FloatText, ShortFloatTexts) {
+    EXPECT_EQ(shortFloat(0.1f), "0.1");
+    EXPECT_EQ(shortFloat(0.7f), "0.7");
+    EXPECT_EQ(shortFloat(-2.5f), "-2.5");
+    EXPECT_EQ(shortFloat(0.026422560f), "0.02642256");
+    EXPECT_EQ(shortFloat(1e-8f), "1e-8");
+    EXPECT_EQ(shortFloat(1.5e20f), "1.5e20");
+    EXPECT_EQ(shortFloat(123456.0f), "123456");
+    EXPECT_EQ(shortFloat(1e6f), "1e6");
+    EXPECT_EQ(shortFloat(3.40282347e38f), "3.4028235e38");
+    EXPECT_EQ(shortFloat(1000.0f), "1000");
+    EXPECT_EQ(shortFloat(0.001f), "0.001");
+    EXPECT_EQ(shortFloat(0.0f), "0");
+    EXPECT_EQ(shortFloat(-0.0f), "0");
+    EXPECT_EQ(shortFloat(std::nextafter(10.0f, 0.0f)), "9.999999");
+}
+
+TEST(FloatText, ShortestWritesSmallWholeNumbersAsIntegers) {
     EXPECT_EQ(shortest(0.0f), "0");
     EXPECT_EQ(shortest(-0.0f), "0");
     EXPECT_EQ(shortest(-42.0f), "-42");
+    EXPECT_EQ(shortest(999.0f), "999");
+    EXPECT_EQ(shortest(0.25f), "0.25");
+    for (float f : sampleFloats()) {
+        if (!isSmallWholeNumber(f)) EXPECT_EQ(shortest(f), shortFloat(f));
+    }
 }
 
 TEST(FloatText, CacheWritesTheSameTextOnMissesAndHits) {
@@ -72,7 +153,7 @@ TEST(FloatText, CollidingValuesKeepTheirOwnText) {
         values.push_back(std::bit_cast<float>(0x3F800001u + k));  // just above 1, one ulp apart
     }
     for (int pass = 0; pass < 2; ++pass) {
-        for (float f : values) EXPECT_EQ(cached(cache, f), toChars(f));
+        for (float f : values) EXPECT_EQ(cached(cache, f), shortFloat(f));
     }
 }
 
