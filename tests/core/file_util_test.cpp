@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "ramus/error.hpp"
 
@@ -33,6 +36,20 @@ TEST(FileUtil, WritingPartsWritesTheirConcatenation) {
     writeFileAtomic(path, parts);
     EXPECT_EQ(readFile(path), std::string("head\0bin", 8));
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// More pieces than one writev takes (64), empty ones among them, and one of several MB.
+TEST(FileUtil, ManyPartsAreWrittenInOrder) {
+    const fs::path dir = scratchDir("many_parts");
+    const std::string path = (dir / "a.bin").string();
+    std::vector<std::string> texts;
+    for (int i = 0; i < 300; ++i) texts.push_back(i % 7 == 3 ? "" : std::to_string(i) + ",");
+    texts[150] = std::string(std::size_t{5} << 20, 'x');
+    std::vector<std::string_view> parts(texts.begin(), texts.end());
+    std::string expected;
+    for (const std::string& t : texts) expected += t;
+    writeFileAtomic(path, parts);
+    EXPECT_EQ(readFile(path, std::size_t{64} << 20), expected);
 }
 
 TEST(FileUtil, FailedWriteKeepsTheOldFileAndLeavesNothingBehind) {
