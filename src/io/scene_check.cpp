@@ -187,9 +187,14 @@ void checkSkinAttributes(const Mesh& mesh, const MeshWhere& where) {
                         std::to_string(mesh.weights.size()) +
                         " weights; expected both or neither (skinning needs both)");
     }
-    for (std::size_t i = 0; i < mesh.weights.size(); ++i) {
+    auto badWeights = [](const Vec4f& w) {
+        return w.minCoeff() < 0.0f || std::abs(w.sum() - 1.0f) > kWeightSumTolerance;
+    };
+    bool anyBad = false;  // branch-free first; the message is looked for on failure only
+    for (const Vec4f& w : mesh.weights) anyBad |= badWeights(w);
+    for (std::size_t i = 0; anyBad && i < mesh.weights.size(); ++i) {
         const Vec4f& w = mesh.weights[i];
-        if (w.minCoeff() < 0.0f || std::abs(w.sum() - 1.0f) > kWeightSumTolerance) {
+        if (badWeights(w)) {
             fail(where, "weights of vertex " + std::to_string(i) + " are (" + formatFloat(w[0]) +
                             ", " + formatFloat(w[1]) + ", " + formatFloat(w[2]) + ", " +
                             formatFloat(w[3]) + "); expected non-negative weights summing to 1");
@@ -338,7 +343,9 @@ void checkSkinnedNode(const Scene& scene, std::size_t i, const std::string& cont
     if (node.skin < 0) return;
     const std::size_t jointCount = scene.skins[node.skin].joints.size();
     const Mesh& mesh = scene.meshes[node.mesh];
-    for (std::size_t v = 0; v < mesh.joints.size(); ++v) {
+    std::uint16_t largest = 0;  // branch-free first; the message is looked for on failure only
+    for (const auto& j : mesh.joints) largest = std::max({largest, j[0], j[1], j[2], j[3]});
+    for (std::size_t v = 0; largest >= jointCount && v < mesh.joints.size(); ++v) {
         for (std::uint16_t j : mesh.joints[v]) {
             if (j >= jointCount) {
                 fail(context + ": node " + std::to_string(i) + " ('" + node.name + "')",
