@@ -8,9 +8,9 @@
 // that is not a power of two, whose lower neighbour is half as far). So the 9-digit integer D
 // nearest to it reads back as f, and so does any shorter rounding of D whose distance to the
 // double-precision value (good to 10⁻⁶ units) stays below half an ulp; the shortest such
-// rounding is written. This gives the shortest text for nearly all floats (0.1f → "0.1") and never a
-// text that reads back as another float (tests/core/float_text_test.cpp checks millions of
-// floats and every power of two against strtof).
+// rounding is written. This gives the shortest text for nearly all floats (0.1f → "0.1") and never
+// a text that reads back as another float (tests/core/float_text_test.cpp checks millions of floats
+// and every power of two against strtof).
 #include "core/float_text.hpp"
 
 #include <bit>
@@ -21,7 +21,8 @@
 namespace ramus::detail {
 namespace {
 
-// 10^k for k in [kMinPow10, kMaxPow10] (the nearest doubles; the compiler rounds the literals).
+// 10^k for k in [−30, 47]: 8 − e for every normal float's decimal exponent e and one more (the
+// nearest doubles; the compiler rounds the literals).
 constexpr int kMinPow10 = -30;
 constexpr double kPow10[] = {
     1e-30, 1e-29, 1e-28, 1e-27, 1e-26, 1e-25, 1e-24, 1e-23, 1e-22, 1e-21, 1e-20, 1e-19, 1e-18,
@@ -29,7 +30,7 @@ constexpr double kPow10[] = {
     1e-4,  1e-3,  1e-2,  1e-1,  1e0,   1e1,   1e2,   1e3,   1e4,   1e5,   1e6,   1e7,   1e8,
     1e9,   1e10,  1e11,  1e12,  1e13,  1e14,  1e15,  1e16,  1e17,  1e18,  1e19,  1e20,  1e21,
     1e22,  1e23,  1e24,  1e25,  1e26,  1e27,  1e28,  1e29,  1e30,  1e31,  1e32,  1e33,  1e34,
-    1e35,  1e36,  1e37,  1e38,  1e39,  1e40,  1e41,  1e42,  1e43,  1e44,  1e45,  1e46};
+    1e35,  1e36,  1e37,  1e38,  1e39,  1e40,  1e41,  1e42,  1e43,  1e44,  1e45,  1e46,  1e47};
 double pow10(int k) { return kPow10[k - kMinPow10]; }
 
 constexpr char kDigitPairs[] =
@@ -57,8 +58,8 @@ char* writeDecimal(char* p, std::uint32_t digits, int count, int exponent) {
     const int fixedLength = exponent >= 0 ? (count <= exponent + 1 ? exponent + 1 : count + 1)
                                           : 1 + (-exponent) + count;
     const int magnitude = exponent < 0 ? -exponent : exponent;
-    const int scientificLength = count + (count > 1 ? 1 : 0) + 1 + (exponent < 0 ? 1 : 0) +
-                                 (magnitude >= 10 ? 2 : 1);
+    const int scientificLength =
+        count + (count > 1 ? 1 : 0) + 1 + (exponent < 0 ? 1 : 0) + (magnitude >= 10 ? 2 : 1);
     // Fixed unless scientific saves two characters or more: 1000 and 0.001 stay readable.
     if (fixedLength <= scientificLength + 1) {
         if (exponent < 0) {
@@ -96,10 +97,10 @@ char* writeDecimal(char* p, std::uint32_t digits, int count, int exponent) {
 }
 
 // D rounded to the fewest digits whose distance to `scaled` (the float in units of D's last
-// digit) stays below `slack`; returns the digit count and sets digits (and bumps exponent when rounding carries,
-// 999… → 1…). Rounding to a coarser power of ten never comes closer than to a finer one (the
-// nearest multiple of 10 is at least as near as the nearest multiple of 100), so the search
-// runs from the finest and stops at the first that is too far: one or two steps for most
+// digit) stays below `slack`; returns the digit count and sets digits (and bumps exponent when
+// rounding carries, 999… → 1…). Rounding to a coarser power of ten never comes closer than to a
+// finer one (the nearest multiple of 10 is at least as near as the nearest multiple of 100), so the
+// search runs from the finest and stops at the first that is too far: one or two steps for most
 // floats, which need 8 or 9 digits.
 int shortestRounding(std::uint32_t d, double scaled, double slack, std::uint32_t& digits,
                      int& exponent) {
@@ -143,8 +144,8 @@ char* writeShortFloat(char* p, float value) {
         return std::to_chars(p, p + 16, value).ptr;  // subnormals: rare, left to the library
     }
     if (bits >> 31) *p++ = '-';
-    const double x = std::bit_cast<double>(
-        (std::uint64_t{biased - 127 + 1023} << 52) | (std::uint64_t{mantissa} << 29));
+    const double x = std::bit_cast<double>((std::uint64_t{biased - 127 + 1023} << 52) |
+                                           (std::uint64_t{mantissa} << 29));
     const int binaryExponent = static_cast<int>(biased) - 127;  // 2^E ≤ x < 2^(E+1)
     // floor(log10 x) is floor(E·log10 2) or one more.
     int exponent = (binaryExponent * 78913) >> 18;  // floor(E · 0.30103), exact for |E| < 2^10
