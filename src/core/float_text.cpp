@@ -104,8 +104,9 @@ char* writeDecimal(char* p, std::uint32_t digits, int count, int exponent) {
 // floats, which need 8 or 9 digits.
 int shortestRounding(std::uint32_t d, double scaled, double slack, std::uint32_t& digits,
                      int& exponent) {
-    constexpr std::uint32_t kScales[] = {1,      10,      100,      1000,     10000,
-                                         100000, 1000000, 10000000, 100000000};
+    // 10^0 … 10^9: the scales tried, and the carry test's 10^count (count ≤ 9).
+    constexpr std::uint32_t kScales[] = {1,      10,      100,      1000,      10000,
+                                         100000, 1000000, 10000000, 100000000, 1000000000};
     int kept = 0;  // the coarsest scale index that is near enough
     std::uint32_t best = d;
 #pragma GCC unroll 8  // each division then is by a constant (a multiplication)
