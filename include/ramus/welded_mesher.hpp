@@ -27,7 +27,7 @@ struct WeldReport {
     std::size_t junctions = 0;      ///< branch nodes (≥ 2 drawn edges leaving a tree part)
     std::size_t merges = 0;         ///< junctions merged with a neighbour (branch nodes too close)
     std::size_t absorbedLimbs = 0;  ///< short end branches taken whole into a junction
-    /// Junctions at their size limit (8 branch nodes, 96 inner ring positions) whose rings
+    /// Junctions at their size limit (16 branch nodes, 256 inner ring positions) whose rings
     /// could not be placed clear of each other (dense thick branching); usually a fallback.
     std::size_t crowded = 0;
     /// Limbs between two junctions too short for both end rings, left overlapping (the

@@ -24,9 +24,12 @@ namespace {
 
 constexpr int kMaxIterations = 240;
 // Junction size limits: dense thick branching (radii far above the internode length) would
-// otherwise merge whole trees into one hull, in quadratic time.
-constexpr std::uint32_t kMaxMembers = 8;
-constexpr std::uint32_t kMaxDiscs = 96;
+// otherwise merge whole trees into one hull, in quadratic time. At 8 / 96 the conifer
+// example's base junction filled up with rings that did not fit (its hull check failed);
+// 16 / 256 settles it and costs the synthetic binary tree about a quarter of its speed
+// (bench/welded_bench.cpp).
+constexpr std::uint32_t kMaxMembers = 16;
+constexpr std::uint32_t kMaxDiscs = 256;
 
 struct Arm {
     std::int32_t limb;

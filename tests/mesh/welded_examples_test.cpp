@@ -111,8 +111,11 @@ TEST(WeldedExamples, EveryColonizationExampleIsClosedGenusZeroSurfaces) {
             const WeldReport report = expectClosedSurfaces(
                 result.trees[t], params, "colonize_" + stem(file) + "_" + std::to_string(t));
             SCOPED_TRACE(file);
-            EXPECT_LE(report.fallbacks, 1u);  // conifer: one crowded junction near the base
-            EXPECT_LE(report.crossings, 5u);
+            EXPECT_EQ(report.fallbacks, 0u);
+            EXPECT_EQ(report.crowded, 0u);
+            EXPECT_EQ(report.components, 1u);
+            // conifer: one limb near the base between two full junctions (16 branch nodes).
+            EXPECT_LE(report.crossings, 1u);
         }
     }
 }
