@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <memory>
 #include <span>
@@ -259,6 +260,8 @@ private:
     // Index buffers with equal contents (bone meshes fitted from one library model; boxes) are
     // written once, found by a hash of their values: hash → mesh.
     std::unordered_multimap<std::uint64_t, std::size_t> indexOwners_;
+    // The mesh whose indices were written or reused last (none yet: the largest size_t).
+    std::size_t lastIndexOwner_ = std::numeric_limits<std::size_t>::max();
     // (view, byte offset, count) → index accessor
     std::map<std::tuple<int, std::size_t, std::size_t>, int> indexAccessors_;
     // The rigid weights (1, 0, 0, 0) are written once, as long as the longest rigid mesh, at
@@ -461,6 +464,17 @@ void GlbBuilder::planIndices(std::size_t m) {
     plan.shortIndices = mesh.positions.size() <= 65535;
     // A single mesh (a tree without LODs) shares with nothing: no hash over its indices.
     const bool shareable = scene_.meshes.size() > 1;
+    // Meshes in a row often have the same indices (a skeleton's boxes): the last one that
+    // wrote indices is compared first, without hashing (a chain of dependent multiplications).
+    if (shareable && lastIndexOwner_ < m) {
+        const MeshPlan& other = plans_[lastIndexOwner_];
+        if (other.shortIndices == plan.shortIndices &&
+            scene_.meshes[lastIndexOwner_].indices == mesh.indices) {
+            plan.indexOffset = other.indexOffset;
+            plan.indicesShared = true;
+            return;
+        }
+    }
     const std::uint64_t hash = shareable ? indexHash(mesh.indices, plan.shortIndices) : 0;
     const auto [first, last] = indexOwners_.equal_range(hash);
     for (auto it = first; it != last; ++it) {
@@ -469,9 +483,11 @@ void GlbBuilder::planIndices(std::size_t m) {
             scene_.meshes[it->second].indices == mesh.indices) {
             plan.indexOffset = other.indexOffset;
             plan.indicesShared = true;
+            lastIndexOwner_ = it->second;
             return;
         }
     }
+    lastIndexOwner_ = m;
     SharedView& view = plan.shortIndices ? shortIndexView_ : intIndexView_;
     plan.indexOffset = view.bytes;
     view.bytes += mesh.indices.size() * (plan.shortIndices ? 2 : 4);

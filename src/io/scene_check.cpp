@@ -187,14 +187,20 @@ void checkSkinAttributes(const Mesh& mesh, const MeshWhere& where) {
                         std::to_string(mesh.weights.size()) +
                         " weights; expected both or neither (skinning needs both)");
     }
-    auto badWeights = [](const Vec4f& w) {
-        return w.minCoeff() < 0.0f || std::abs(w.sum() - 1.0f) > kWeightSumTolerance;
+    // Weights w[0..3] that are negative or do not sum to 1.
+    auto badWeights = [](const float* w) {
+        const float sum = (w[0] + w[1]) + (w[2] + w[3]);
+        const float least = std::min(std::min(w[0], w[1]), std::min(w[2], w[3]));
+        return (least < 0.0f) | (std::abs(sum - 1.0f) > kWeightSumTolerance);
     };
-    bool anyBad = false;  // branch-free first; the message is looked for on failure only
-    for (const Vec4f& w : mesh.weights) anyBad |= badWeights(w);
+    // Branch-free first over the flat floats (the compiler vectorizes it); the message is
+    // looked for on failure only.
+    const float* flat = mesh.weights.empty() ? nullptr : mesh.weights.data()->data();
+    bool anyBad = false;
+    for (std::size_t i = 0; i < 4 * mesh.weights.size(); i += 4) anyBad |= badWeights(flat + i);
     for (std::size_t i = 0; anyBad && i < mesh.weights.size(); ++i) {
         const Vec4f& w = mesh.weights[i];
-        if (badWeights(w)) {
+        if (badWeights(w.data())) {
             fail(where, "weights of vertex " + std::to_string(i) + " are (" + formatFloat(w[0]) +
                             ", " + formatFloat(w[1]) + ", " + formatFloat(w[2]) + ", " +
                             formatFloat(w[3]) + "); expected non-negative weights summing to 1");
@@ -343,8 +349,10 @@ void checkSkinnedNode(const Scene& scene, std::size_t i, const std::string& cont
     if (node.skin < 0) return;
     const std::size_t jointCount = scene.skins[node.skin].joints.size();
     const Mesh& mesh = scene.meshes[node.mesh];
-    std::uint16_t largest = 0;  // branch-free first; the message is looked for on failure only
-    for (const auto& j : mesh.joints) largest = std::max({largest, j[0], j[1], j[2], j[3]});
+    // Branch-free first over the flat indices; the message is looked for on failure only.
+    std::uint16_t largest = 0;
+    const std::uint16_t* flat = mesh.joints.empty() ? nullptr : mesh.joints.data()->data();
+    for (std::size_t k = 0; k < 4 * mesh.joints.size(); ++k) largest = std::max(largest, flat[k]);
     for (std::size_t v = 0; largest >= jointCount && v < mesh.joints.size(); ++v) {
         for (std::uint16_t j : mesh.joints[v]) {
             if (j >= jointCount) {

@@ -12,6 +12,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -154,6 +155,21 @@ TEST(FloatText, CollidingValuesKeepTheirOwnText) {
     }
     for (int pass = 0; pass < 2; ++pass) {
         for (float f : values) EXPECT_EQ(cached(cache, f), shortFloat(f));
+    }
+}
+
+// The cache copies whole slots (fixed-size copies, no `rep movsq`): in a buffer of exactly the
+// documented 16 bytes the longest texts, signed, on a miss and on a hit, stay inside it (a
+// heap buffer, so AddressSanitizer in `make test` sees any byte past it) and come out whole.
+TEST(FloatText, CacheWritesWithinSixteenBytes) {
+    FloatTextCache cache;
+    const std::unique_ptr<char[]> buffer(new char[16]);
+    for (float f : {-1.17549435e-38f, -3.40282347e38f, -0.000123456789f, -1.5e-45f, 0.1f}) {
+        for (int pass = 0; pass < 2; ++pass) {
+            char* end = cache.write(buffer.get(), buffer.get() + 16, f);
+            ASSERT_LE(end - buffer.get(), 16);
+            EXPECT_EQ(std::string(buffer.get(), end), shortest(f)) << f;
+        }
     }
 }
 

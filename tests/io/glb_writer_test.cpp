@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
@@ -239,6 +240,52 @@ TEST(GlbWriter, EmptySceneIsAValidAssetWithoutBuffers) {
     EXPECT_FALSE(glb.doc.contains("nodes"));
     EXPECT_FALSE(glb.doc.contains("accessors"));
     exportForValidator(scene, "empty_scene");
+}
+
+// The indices of one accessor, read back from the BIN chunk (UNSIGNED_SHORT or UNSIGNED_INT).
+std::vector<std::uint32_t> accessorIndices(const Glb& glb, int accessor) {
+    const json& a = glb.doc["accessors"][accessor];
+    const json& view = glb.doc["bufferViews"][a["bufferView"].get<int>()];
+    const std::size_t offset = view["byteOffset"].get<std::size_t>() + a.value("byteOffset", 0);
+    const bool shortIndices = a["componentType"] == 5123;
+    std::vector<std::uint32_t> values(a["count"].get<std::size_t>());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        std::uint16_t s = 0;
+        if (shortIndices) {
+            std::memcpy(&s, glb.bin.data() + offset + 2 * i, 2);
+            values[i] = s;
+        } else {
+            std::memcpy(&values[i], glb.bin.data() + offset + 4 * i, 4);
+        }
+    }
+    return values;
+}
+
+// Meshes with equal index buffers share one index accessor, whether the equal one came just
+// before (a run of boxes) or earlier with other meshes in between; every mesh reads back its
+// own indices.
+TEST(GlbWriter, EqualIndexBuffersAreWrittenOnce) {
+    const Mesh a = makeCube(0.5f);
+    Mesh b = makeCube(0.25f);
+    std::reverse(b.indices.begin(), b.indices.end());  // other indices, same vertex count
+    Scene scene;
+    const std::vector<const Mesh*> order = {&a, &a, &b, &a, &b, &b};
+    for (const Mesh* m : order) scene.meshes.push_back(*m);
+    const Glb glb = splitGlb(encodeGlb(scene));
+    ASSERT_EQ(glb.doc["meshes"].size(), 6u);
+    std::vector<int> accessors;
+    for (const json& mesh : glb.doc["meshes"]) {
+        accessors.push_back(mesh["primitives"][0]["indices"].get<int>());
+    }
+    EXPECT_EQ(accessors[0], accessors[1]);
+    EXPECT_EQ(accessors[0], accessors[3]);
+    EXPECT_EQ(accessors[2], accessors[4]);
+    EXPECT_EQ(accessors[2], accessors[5]);
+    EXPECT_NE(accessors[0], accessors[2]);
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        EXPECT_EQ(accessorIndices(glb, accessors[m]), scene.meshes[m].indices) << "mesh " << m;
+    }
+    exportForValidator(scene, "shared_index_buffers");
 }
 
 TEST(GlbWriter, LargeMeshesUseUnsignedIntIndices) {
