@@ -47,7 +47,8 @@ struct WeldReport {
 /// branch, and the convex hull of those rings, minus the rings' own discs, joins them. Branch
 /// nodes closer than that are merged into one junction; end branches shorter than their
 /// junction become part of it. Tips and the base are closed with flat fans. Coincident nodes
-/// are merged. Output as buildTubeMesh: mesh "tree", unit normals (radial on rings), glTF
+/// are merged (zero-length edges; an edge drawn twice from one node, which keeps the thicker
+/// radius). Output as buildTubeMesh: mesh "tree", unit normals (radial on rings), glTF
 /// tangents (w = +1), UVs (u around the ring, v along the branch, continuing through branch
 /// nodes), one primitive "bark" with params.tube.material; triangles counter-clockwise from
 /// outside. Seam and cap vertices repeat ring positions bit-exactly, so welding by position

@@ -154,9 +154,16 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
     const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
     double v = keyV_[static_cast<std::size_t>(limb.startKey)];
     // The start node's ring is already there when the limb ending at it is absorbed too (on a
-    // straight chain it would repeat it bit for bit and pinch the hull).
-    const std::int32_t in = s.inLimb[static_cast<std::size_t>(limb.startKey)];
-    const bool startShown = in >= 0 && junctions_.absorbed[static_cast<std::size_t>(in)];
+    // straight chain it would repeat it bit for bit and pinch the hull), or an earlier limb
+    // from the same node: rings of equal centre and radius share points wherever their planes
+    // cross (in a flat plant, ±r off the plane), and the hull would join the two copies of a
+    // point in a degenerate face.
+    const auto key = static_cast<std::size_t>(limb.startKey);
+    const std::int32_t in = s.inLimb[key];
+    bool startShown = in >= 0 && junctions_.absorbed[static_cast<std::size_t>(in)];
+    for (std::int32_t earlier = s.firstOut[key]; earlier < l && !startShown; ++earlier) {
+        startShown = junctions_.absorbed[static_cast<std::size_t>(earlier)] != 0;
+    }
     // The parent branch's values at the limb's start (see the file comment).
     const WindSample wind = params_.tube.windAttributes ? wind_.at(limb.startKey) : WindSample{};
     for (std::uint32_t k = 0; k < limb.count; ++k) {

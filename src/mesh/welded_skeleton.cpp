@@ -1,7 +1,7 @@
 // The limb graph of the welded mesher (see welded_skeleton.hpp): one pass merges coincident
-// nodes, a second groups drawn edges into limbs between key nodes. Radii, the trunk multiplier
-// and the segment rule are those of buildTubeMesh (src/mesh/tube_mesher.cpp), so a welded
-// branch's rings lie on the same tube.
+// nodes (zero-length edges, edges drawn twice), a second groups drawn edges into limbs between
+// key nodes. Radii, the trunk multiplier and the segment rule are those of buildTubeMesh
+// (src/mesh/tube_mesher.cpp), so a welded branch's rings lie on the same tube.
 #include "welded_skeleton.hpp"
 
 #include <algorithm>
@@ -21,24 +21,58 @@ int segmentsFor(const TubeMeshParams& params, double radius, double maxRadius) {
     return lo + static_cast<int>((hi - lo) * t + 0.5);
 }
 
-// Merges every node closer than the merge distance to its (merged) parent into it, counts the
-// drawn edges at every remaining node and marks the key nodes.
-void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<std::uint8_t>& incoming) {
+// Distance within which a node coincides with an earlier-drawn sibling: a thousandth of the
+// smaller of the two edges' radii and lengths (at least the merge distance). The turtle draws
+// ABOP 1.24b's `[F]` and the `F` of the following branch from the same state, and 1.24f's
+// `+X` and `+F` along the same line; the copies agree to rounding, far below this.
+constexpr double kSiblingTolerance = 1e-3;
+
+// Merges every node closer than the merge distance to its (merged) parent into it, and every
+// node that coincides with an earlier sibling (an edge drawn twice) into that sibling, which
+// keeps the thicker radius; the merged node's children then hang from its representative, so
+// an edge chain drawn twice merges node by node. Counts the drawn edges at every remaining
+// node and marks the key nodes. Siblings are compared pairwise: quadratic only in a node's
+// degree, as the ring placement at its junction is.
+void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<double>& radii,
+                std::vector<std::uint8_t>& incoming) {
     const std::size_t n = tree.size();
     const double merge2 = s.mergeDistance * s.mergeDistance;
     s.rep.resize(n);
     s.degree.assign(n, 0);
     incoming.assign(n, 0);
+    // Per node: its children so far after merging, as a list through nextChild.
+    std::vector<NodeId> firstChild(n, kNoNode);
+    std::vector<NodeId> nextChild(n, kNoNode);
     s.rep[0] = 0;
     for (std::size_t i = 1; i < n; ++i) {
         const BranchNode& node = tree.nodes()[i];
         s.rep[i] = static_cast<NodeId>(i);
         if (node.hidden) continue;
         const NodeId p = s.rep[static_cast<std::size_t>(node.parent)];
-        if ((node.position - tree.node(p).position).squaredNorm() <= merge2) {
+        const Vec3& origin = tree.node(p).position;
+        const double length2 = (node.position - origin).squaredNorm();
+        if (length2 <= merge2) {
             s.rep[i] = p;
             continue;
         }
+        NodeId twin = firstChild[static_cast<std::size_t>(p)];
+        for (; twin != kNoNode; twin = nextChild[static_cast<std::size_t>(twin)]) {
+            const auto t = static_cast<std::size_t>(twin);
+            const double scale = std::min({radii[i], radii[t], std::sqrt(length2),
+                                           (tree.node(twin).position - origin).norm()});
+            const double tolerance = std::max(s.mergeDistance, kSiblingTolerance * scale);
+            if ((node.position - tree.node(twin).position).squaredNorm() <= tolerance * tolerance) {
+                break;
+            }
+        }
+        if (twin != kNoNode) {
+            s.rep[i] = twin;
+            double& kept = radii[static_cast<std::size_t>(twin)];
+            kept = std::max(kept, radii[i]);
+            continue;
+        }
+        nextChild[i] = firstChild[static_cast<std::size_t>(p)];
+        firstChild[static_cast<std::size_t>(p)] = static_cast<NodeId>(i);
         incoming[i] = 1;
         ++s.degree[i];
         ++s.degree[static_cast<std::size_t>(p)];
@@ -71,8 +105,10 @@ WeldSkeleton buildWeldSkeleton(const BranchTree& tree, const TubeMeshParams& par
     if (n < 2) return s;
     const Aabb box = tree.bounds();
     s.mergeDistance = 1e-6 * std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
+    // Radii first: a node merged into an earlier sibling passes on its radius if thicker.
+    std::vector<double> radii = computeEdgeRadii(tree, params);
     std::vector<std::uint8_t> incoming;
-    mergeNodes(tree, s, incoming);
+    mergeNodes(tree, s, radii, incoming);
 
     // Children of every remaining node (CSR, by child id).
     std::vector<std::uint32_t> childFirst(n + 1, 0);
@@ -89,7 +125,6 @@ WeldSkeleton buildWeldSkeleton(const BranchTree& tree, const TubeMeshParams& par
         }
     }
 
-    const std::vector<double> radii = computeEdgeRadii(tree, params);
     const double trunk = params.trunkMultiplier > 0.0 && std::isfinite(params.trunkMultiplier)
                              ? params.trunkMultiplier
                              : 1.0;

@@ -1,6 +1,7 @@
-// The welded mesher's view of a BranchTree: coincident nodes merged, drawn edges grouped into
-// limbs (unbranched stretches between key nodes), and the junction solver that places each
-// limb's end rings. Internal to src/mesh (welded_*.cpp).
+// The welded mesher's view of a BranchTree: coincident nodes merged (zero-length edges, edges
+// drawn twice from one node), drawn edges grouped into limbs (unbranched stretches between key
+// nodes), and the junction solver that places each limb's end rings. Internal to src/mesh
+// (welded_*.cpp).
 #pragma once
 
 #include <cstdint>

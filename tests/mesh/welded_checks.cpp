@@ -87,28 +87,31 @@ Topology analyzeTopology(const Mesh& mesh) {
     std::vector<std::uint32_t> parent(mesh.positions.size());
     std::iota(parent.begin(), parent.end(), 0u);
     std::vector<std::uint8_t> used(mesh.positions.size(), 0);
-    bool ok = true;
+    std::vector<std::uint8_t> bad(mesh.positions.size(), 0);  // on an edge that fails
     for (std::size_t t = 0; t < top.faces; ++t) {
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t a = id[mesh.indices[3 * t + e]];
             const std::uint32_t b = id[mesh.indices[3 * t + (e + 1) % 3]];
-            ok = ok && a != b;
+            if (a == b) bad[a] = 1;
             used[a] = 1;
-            if (++directed[(std::uint64_t{a} << 32) | b] > 1) ok = false;
+            if (++directed[(std::uint64_t{a} << 32) | b] > 1) bad[a] = 1;
             parent[findRoot(parent, a)] = findRoot(parent, b);
         }
     }
     for (const auto& [edge, count] : directed) {
         const std::uint64_t reverse = (edge << 32) | (edge >> 32);
-        if (directed.find(reverse) == directed.end()) ok = false;
+        if (directed.find(reverse) == directed.end()) bad[edge >> 32] = 1;
     }
-    top.closedOriented = ok;
     top.edges = (directed.size() + 1) / 2;
+    std::vector<std::uint8_t> open(mesh.positions.size(), 0);  // per component root
     for (std::uint32_t v = 0; v < used.size(); ++v) {
         if (!used[v]) continue;
         ++top.vertices;
-        if (findRoot(parent, v) == v) ++top.components;
+        const std::uint32_t root = findRoot(parent, v);
+        if (root == v) ++top.components;
+        if (bad[v] && !open[root]) open[root] = 1, ++top.openComponents;
     }
+    top.closedOriented = top.openComponents == 0;
     return top;
 }
 

@@ -24,6 +24,9 @@ struct Topology {
     /// Every directed edge once and its reverse once: each edge has exactly two faces, and
     /// they are wound consistently.
     bool closedOriented = false;
+    /// Components with an edge that breaks that (closedOriented: none); the others are each
+    /// closed and consistently wound.
+    std::size_t openComponents = 0;
     long long euler() const {
         return static_cast<long long>(vertices) - static_cast<long long>(edges) +
                static_cast<long long>(faces);

@@ -82,9 +82,18 @@ TEST(WeldedExamples, LSystemExamplesWithThinBranchesAreOneClosedGenusZeroSurface
     }
 }
 
-// Known limit (docs/welded.md): where junctions overlap or fall back, the parts are not
-// guaranteed to be one 2-manifold. What must hold: meshing ends, the output is well formed
-// and encloses positive volume, and the report says what was given up.
+// Dense examples whose welded mesh has pieces that are not closed (docs/welded.md, "Quality
+// and limits"): 1.31a draws some edges again from other nodes at the same place (a later
+// branch running along an existing axis; no siblings, so not merged). Rings of the copy coincide
+// with the axis tube's rings vertex for vertex, and tube and junction triangles then share
+// edges.
+bool hasOpenPieces(const std::string& name) { return name == "abop_1_31a"; }
+
+// Known limit (docs/welded.md): where junctions overlap or fall back, the surface may intersect
+// itself and a fallback leaves the limbs as separately capped tubes, so it is not one surface.
+// What must hold: meshing ends, the output is well formed and encloses positive volume, every
+// piece (apart from the examples above) is a closed, consistently wound genus-0 surface, and
+// the report says what was given up.
 TEST(WeldedExamples, DenseLSystemExamplesStillMeshAndReportTheirCompromises) {
     for (const std::string& file : exampleFiles("/examples/lsystems", ".lsys")) {
         if (weldsCleanly(stem(file))) continue;
@@ -98,6 +107,18 @@ TEST(WeldedExamples, DenseLSystemExamplesStillMeshAndReportTheirCompromises) {
         EXPECT_LT(test::worstNormalLength(mesh), 1e-5);
         EXPECT_GT(test::signedVolume(mesh), 0.0);
         EXPECT_GT(report.crossings + report.fallbacks, 0u);
+        const test::Topology top = test::analyzeTopology(mesh);
+        if (!hasOpenPieces(stem(file))) {
+            // Every edge on exactly two triangles, wound oppositely; and since a closed piece
+            // has χ ≤ 2, χ = 2 per piece in total means every piece is a sphere.
+            EXPECT_EQ(top.openComponents, 0u);
+            EXPECT_EQ(top.euler(), 2 * static_cast<long long>(top.components));
+        }
+        std::printf(
+            "%s: %zu pieces, %zu open, euler %lld, %zu junctions, %zu crossings, "
+            "%zu fallbacks\n",
+            stem(file).c_str(), top.components, top.openComponents, top.euler(), report.junctions,
+            report.crossings, report.fallbacks);
     }
 }
 

@@ -164,6 +164,40 @@ TEST(WeldedMesh, ZeroLengthEdgesAreMerged) {
     expectWelded(tree, segments(6, 8), "zero_length");
 }
 
+// ABOP 1.24b (F -> F[+F]F[-F][F]) ends each copy of F with a tip `[F]` and then draws the
+// next branch's first `F` from the same state: two sibling edges with the same ends. 1.24f
+// (`+X` then `+F`, with F -> FF) draws a chain of edges along another: the copies coincide node
+// by node. Unmerged, two equal rings sit on one tube; the junction cannot separate them, takes
+// both limbs in, and the copies' coinciding ring vertices give degenerate hull faces (the tip
+// and the chain below: not a closed 2-manifold), or the hull bulges 4-7 radii out of the
+// branches (all three).
+TEST(WeldedMesh, EdgesDrawnTwiceAreMerged) {
+    BranchTree tips;
+    const NodeId a = tips.addChild(tips.addRoot(Vec3::Zero()), Vec3(0, 1, 0));
+    tips.addChild(a, Vec3(-0.6, 1.7, 0));
+    tips.addChild(a, Vec3(0, 2, 0));
+    tips.addChild(a, Vec3(0, 2, 0));
+    expectWelded(tips, segments(6, 8), "tip_drawn_twice");
+
+    BranchTree fork;
+    const NodeId b = fork.addChild(fork.addRoot(Vec3::Zero()), Vec3(0, 1, 0));
+    fork.addChild(b, Vec3(-0.6, 1.7, 0));
+    fork.addChild(b, Vec3(0, 2, 0));  // the tip
+    const NodeId copy = fork.addChild(b, Vec3(0, 2, 0));
+    fork.addChild(copy, Vec3(0, 3, 0));
+    fork.addChild(copy, Vec3(0.6, 2.7, 0));
+    expectWelded(fork, segments(6, 8), "tip_and_fork_drawn_twice");
+
+    BranchTree chains;
+    const NodeId c = chains.addChild(chains.addRoot(Vec3::Zero()), Vec3(0, 1, 0));
+    chains.addChild(c, Vec3(-0.6, 1.7, 0));
+    chains.addChild(chains.addChild(c, Vec3(0, 2, 0)), Vec3(0, 3, 0));
+    const NodeId second = chains.addChild(c, Vec3(0, 2, 0));
+    chains.addChild(second, Vec3(0, 3, 0));
+    chains.addChild(second, Vec3(0.6, 2.7, 0));
+    expectWelded(chains, segments(6, 8), "chain_drawn_twice");
+}
+
 TEST(WeldedMesh, RootWithTwoChildrenBendsThroughIt) {
     BranchTree tree;
     const NodeId root = tree.addRoot(Vec3::Zero());
