@@ -164,6 +164,14 @@ TEST(WeldedMesh, ZeroLengthEdgesAreMerged) {
     expectWelded(tree, segments(6, 8), "zero_length");
 }
 
+// A stem from the origin to (0, 1, 0) with a side branch; returns the stem's top, where the
+// cases below draw an edge twice.
+NodeId forkedStem(BranchTree& tree) {
+    const NodeId top = tree.addChild(tree.addRoot(Vec3::Zero()), Vec3(0, 1, 0));
+    tree.addChild(top, Vec3(-0.6, 1.7, 0));
+    return top;
+}
+
 // ABOP 1.24b (F -> F[+F]F[-F][F]) ends each copy of F with a tip `[F]` and then draws the
 // next branch's first `F` from the same state: two sibling edges with the same ends. 1.24f
 // (`+X` then `+F`, with F -> FF) draws a chain of edges along another: the copies coincide node
@@ -173,15 +181,13 @@ TEST(WeldedMesh, ZeroLengthEdgesAreMerged) {
 // branches (all three).
 TEST(WeldedMesh, EdgesDrawnTwiceAreMerged) {
     BranchTree tips;
-    const NodeId a = tips.addChild(tips.addRoot(Vec3::Zero()), Vec3(0, 1, 0));
-    tips.addChild(a, Vec3(-0.6, 1.7, 0));
+    const NodeId a = forkedStem(tips);
     tips.addChild(a, Vec3(0, 2, 0));
     tips.addChild(a, Vec3(0, 2, 0));
     expectWelded(tips, segments(6, 8), "tip_drawn_twice");
 
     BranchTree fork;
-    const NodeId b = fork.addChild(fork.addRoot(Vec3::Zero()), Vec3(0, 1, 0));
-    fork.addChild(b, Vec3(-0.6, 1.7, 0));
+    const NodeId b = forkedStem(fork);
     fork.addChild(b, Vec3(0, 2, 0));  // the tip
     const NodeId copy = fork.addChild(b, Vec3(0, 2, 0));
     fork.addChild(copy, Vec3(0, 3, 0));
@@ -189,8 +195,7 @@ TEST(WeldedMesh, EdgesDrawnTwiceAreMerged) {
     expectWelded(fork, segments(6, 8), "tip_and_fork_drawn_twice");
 
     BranchTree chains;
-    const NodeId c = chains.addChild(chains.addRoot(Vec3::Zero()), Vec3(0, 1, 0));
-    chains.addChild(c, Vec3(-0.6, 1.7, 0));
+    const NodeId c = forkedStem(chains);
     chains.addChild(chains.addChild(c, Vec3(0, 2, 0)), Vec3(0, 3, 0));
     const NodeId second = chains.addChild(c, Vec3(0, 2, 0));
     chains.addChild(second, Vec3(0, 3, 0));
