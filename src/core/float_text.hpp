@@ -50,8 +50,8 @@ public:
         char* p = first;
         if (value < 0.0f) *p++ = '-';
         // The copies have a fixed size (the whole slot), which compiles to a few moves: a copy
-        // of the text's own length became `rep movsq`, whose start-up costs ~30 cycles on Intel
-        // cores (perf: a fifth of the GLB writer's time). The bytes after the text are garbage
+        // of the text's own length became `rep movsq`, whose start-up costs tens of cycles on
+        // Intel cores (docs/BENCHMARKS.md, session 8). The bytes after the text are garbage
         // of the caller's buffer, which has room for them (16 bytes, the sign included).
         RAMUS_ASSERT(last - first >= 16);
         (void)last;

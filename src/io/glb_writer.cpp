@@ -464,28 +464,25 @@ void GlbBuilder::planIndices(std::size_t m) {
     plan.shortIndices = mesh.positions.size() <= 65535;
     // A single mesh (a tree without LODs) shares with nothing: no hash over its indices.
     const bool shareable = scene_.meshes.size() > 1;
+    // Reuses the indices of mesh `owner` (which wrote them) when they are the same.
+    auto shareWith = [&](std::size_t owner) {
+        const MeshPlan& other = plans_[owner];
+        if (other.shortIndices != plan.shortIndices ||
+            scene_.meshes[owner].indices != mesh.indices) {
+            return false;
+        }
+        plan.indexOffset = other.indexOffset;
+        plan.indicesShared = true;
+        lastIndexOwner_ = owner;
+        return true;
+    };
     // Meshes in a row often have the same indices (a skeleton's boxes): the last one that
     // wrote indices is compared first, without hashing (a chain of dependent multiplications).
-    if (shareable && lastIndexOwner_ < m) {
-        const MeshPlan& other = plans_[lastIndexOwner_];
-        if (other.shortIndices == plan.shortIndices &&
-            scene_.meshes[lastIndexOwner_].indices == mesh.indices) {
-            plan.indexOffset = other.indexOffset;
-            plan.indicesShared = true;
-            return;
-        }
-    }
+    if (shareable && lastIndexOwner_ < m && shareWith(lastIndexOwner_)) return;
     const std::uint64_t hash = shareable ? indexHash(mesh.indices, plan.shortIndices) : 0;
     const auto [first, last] = indexOwners_.equal_range(hash);
     for (auto it = first; it != last; ++it) {
-        const MeshPlan& other = plans_[it->second];
-        if (other.shortIndices == plan.shortIndices &&
-            scene_.meshes[it->second].indices == mesh.indices) {
-            plan.indexOffset = other.indexOffset;
-            plan.indicesShared = true;
-            lastIndexOwner_ = it->second;
-            return;
-        }
+        if (shareWith(it->second)) return;
     }
     lastIndexOwner_ = m;
     SharedView& view = plan.shortIndices ? shortIndexView_ : intIndexView_;
