@@ -2,6 +2,8 @@
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 2.1 REQUIRED)
+# fmt: only its Dragonbox float-to-decimal core, header-only (src/core/float_text.cpp).
+find_package(fmt 9 REQUIRED)
 if(RAMUS_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
