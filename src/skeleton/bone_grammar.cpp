@@ -208,6 +208,7 @@ BoneSymbolTree compacted(const BoneSymbolTree& tree) {
     if (tree.root < 0) return out;
     std::vector<int> stack{tree.root};
     std::vector<int> newIndex(tree.nodes.size(), -1);
+    out.nodes.reserve(tree.nodes.size());  // at least the alive nodes
     while (!stack.empty()) {
         const int n = stack.back();
         stack.pop_back();
@@ -308,7 +309,7 @@ GrammarParams grammarParams(const SkeletonDesign& design, const Spine& spine) {
 }
 
 int BoneRuleTree::add(BoneSymbol symbol, int parent, bool branch, bool present) {
-    if (nodes.empty()) nodes.reserve(32);
+    if (nodes.empty()) nodes.reserve(64);  // the longest default rules (back, tail) fit
     BoneRuleNode node;
     node.symbol = symbol;
     node.parent = parent;
@@ -358,10 +359,14 @@ BoneSymbolTree deriveBoneTree(const GrammarParams& params, const BoneRuleDiction
     checkGrammarParams(params);
     BoneSymbolTree tree = BoneSymbolTree::start();
     tree.nodes.reserve(256);
-    Scratch scratch;
+    Scratch scratch;  // room for the default rules' trees, so that the buffers rarely grow
+    for (std::vector<int>* buffer :
+         {&scratch.mapped, &scratch.topLevel, &scratch.stack, &scratch.found})
+        buffer->reserve(64);
     // The pending nonterminals in word order, reversed: the top is the leftmost. Replacing it
     // puts its rule's nonterminals where it stood, before all the others.
     std::vector<int> pending{tree.root};
+    pending.reserve(64);
     int steps = 0;
     while (!pending.empty()) {
         if (++steps > kMaxDerivationSteps) {
@@ -380,6 +385,7 @@ BoneSymbolTree deriveBoneTree(const GrammarParams& params, const BoneRuleDiction
 
 std::string boneWord(const BoneSymbolTree& tree) {
     std::string out;
+    out.reserve(12 * tree.nodes.size());  // names average ~9 characters with spaces and brackets
     if (tree.root >= 0) writeWord(tree, tree.root, out);
     return out;
 }

@@ -181,6 +181,7 @@ void Placer::sampleSections() {
         const int n = count(run.section);
         if (n == 0) continue;
         std::vector<Vec2>& points = samples_[static_cast<int>(run.section)];
+        points.reserve(static_cast<std::size_t>(n) + 1);
         for (double t : spineSamples(spine_, run.part, run.from, run.to, n, design_.spacing))
             points.push_back(spinePoint(spine_, run.part, t));
     }

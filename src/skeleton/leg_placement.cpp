@@ -37,8 +37,8 @@ int sideDof(const Joint& joint) { return joint.dofCount - 1; }
 
 /// The fixed parts of one leg and its current side angles.
 struct Leg {
-    Mat4 girdle = Mat4::Identity();
-    double girdleAngle = 0.0;  ///< φ of the girdle
+    Mat4 upperBase = Mat4::Identity();  ///< girdle · fixed[0]: bone 0 before its side swing
+    double girdleAngle = 0.0;           ///< φ of the girdle
     /// Per joint: translate(position) · rest · R(dofs before the side swing), fixed here.
     std::array<Mat4, 3> fixed{};
     std::array<double, 3> angles{};  ///< side angles (degrees), about the joints' z axes
@@ -54,29 +54,51 @@ struct Leg {
     double maxAngle(int k) const { return maxAngles[k]; }
 };
 
-/// World transform of bone k turned by `angle` under its parent's world transform:
-/// parent · fixed · R_z(angle).
-Mat4 boneWorld(const Leg& leg, const Mat4& parent, int k, double angle) {
-    Mat4 world;
-    world.noalias() = parent * leg.fixed[k];
-    const double c = std::cos(degToRad(angle)), s = std::sin(degToRad(angle));
+/// cos and sin of a side angle (degrees). A candidate turn of the iteration changes one or two
+/// angles; the others keep theirs, so each is computed once.
+struct Turn {
+    double c = 1.0, s = 0.0;
+};
+Turn turnOf(double angle) { return {std::cos(degToRad(angle)), std::sin(degToRad(angle))}; }
+
+/// Bone k's world transform before its side swing: parent · fixed[k], the parent's from `world`;
+/// bone 0's is the same in every pose (Leg::upperBase).
+Mat4 unturned(const Leg& leg, const std::array<Mat4, 3>& world, int k) {
+    if (k == 0) return leg.upperBase;
+    Mat4 result;
+    result.noalias() = world[k - 1] * leg.fixed[k];
+    return result;
+}
+
+/// Applies the side swing: world = world · R_z(angle), in place.
+void applyTurn(Mat4& world, const Turn& turn) {
     const Vec4 x = world.col(0), y = world.col(1);
-    world.col(0) = c * x + s * y;
-    world.col(1) = c * y - s * x;
-    return world;
+    world.col(0) = turn.c * x + turn.s * y;
+    world.col(1) = turn.c * y - turn.s * x;
 }
 
-/// Recomputes the world transforms of bones `from`…2 after their angles changed.
-void updateWorld(const Leg& leg, std::array<Mat4, 3>& world, int from) {
-    for (int k = from; k < 3; ++k)
-        world[k] = boneWorld(leg, k == 0 ? leg.girdle : world[k - 1], k, leg.angles[k]);
+/// Sets world[k] for bone k turned by `turn`, under its parent's world[k − 1] (or the girdle).
+void placeBone(const Leg& leg, std::array<Mat4, 3>& world, int k, const Turn& turn) {
+    if (k == 0)
+        world[0] = leg.upperBase;
+    else
+        world[k].noalias() = world[k - 1] * leg.fixed[k];
+    applyTurn(world[k], turn);
 }
 
-/// World transforms of the three bones.
-std::array<Mat4, 3> legWorld(const Leg& leg) {
+/// The world transforms of the three bones at the leg's angles, and the angles' Turns.
+struct LegPose {
     std::array<Mat4, 3> world;
-    updateWorld(leg, world, 0);
-    return world;
+    std::array<Turn, 3> turns;
+};
+
+LegPose legPose(const Leg& leg) {
+    LegPose pose;
+    for (int k = 0; k < 3; ++k) {
+        pose.turns[k] = turnOf(leg.angles[k]);
+        placeBone(leg, pose.world, k, pose.turns[k]);
+    }
+    return pose;
 }
 
 /// Lowest y of the face x = `at` (0 or the length) of a box.
@@ -172,30 +194,46 @@ void foldLeg(Leg& leg, bool front) {
 /// one turning back (the next bone keeps its direction; without it a nearly vertical foot, which
 /// may not point backwards, locks the hip for good). A joint whose lowering turns are all
 /// invalid counts as undone. Returns whether most attempted turns were undone (§7.5 point 2).
-bool legIteration(Leg& leg, double step) {
+/// `current` is the leg's pose on entry and its new pose on return.
+bool legIteration(Leg& leg, double step, LegPose& current) {
     int attempted = 0, undone = 0;
-    std::array<Mat4, 3> current = legWorld(leg);
     for (int k = 0; k < 3; ++k) {
         const std::array<double, 3> saved = legAngles(leg);
-        double best = targetHeight(leg, current, k);
+        double best = targetHeight(leg, current.world, k);
         std::array<double, 3> bestAngles = saved;
-        std::array<Mat4, 3> bestWorld = current;
+        LegPose bestPose = current;
         bool lowering = false;
+        // Bones before k do not move, and candidates 2 and 3 turn joint k as 0 and 1 do: bone k's
+        // frame is computed once per direction.
+        const Mat4 base = unturned(leg, current.world, k);
+        std::array<Turn, 2> turnsK;
+        std::array<Mat4, 2> worldsK;
+        LegPose pose = current;
         for (int candidate = 0; candidate < (k < 2 ? 4 : 2); ++candidate) {
             setLegAngles(leg, saved);
-            if (!turnJoint(leg, k, candidate % 2 == 0 ? step : -step, candidate >= 2)) continue;
-            std::array<Mat4, 3> world = current;  // bones before k do not move
-            updateWorld(leg, world, k);
-            const double height = targetHeight(leg, world, k);
+            const int direction = candidate % 2;
+            const bool keepNext = candidate >= 2;
+            if (!turnJoint(leg, k, direction == 0 ? step : -step, keepNext)) continue;
+            if (!keepNext) {
+                turnsK[direction] = turnOf(leg.angle(k));
+                worldsK[direction] = base;
+                applyTurn(worldsK[direction], turnsK[direction]);
+            }
+            pose.turns[k] = turnsK[direction];
+            pose.world[k] = worldsK[direction];
+            if (k < 2)
+                pose.turns[k + 1] = keepNext ? turnOf(leg.angle(k + 1)) : current.turns[k + 1];
+            for (int j = k + 1; j < 3; ++j) placeBone(leg, pose.world, j, pose.turns[j]);
+            const double height = targetHeight(leg, pose.world, k);
             if (height >= best) continue;
             lowering = true;
-            if (!legValid(leg, world, k)) continue;
+            if (!legValid(leg, pose.world, k)) continue;
             best = height;
             bestAngles = legAngles(leg);
-            bestWorld = world;
+            bestPose = pose;
         }
         setLegAngles(leg, bestAngles);
-        current = bestWorld;
+        current = bestPose;
         if (!lowering) continue;
         ++attempted;
         if (bestAngles == saved) ++undone;
@@ -206,7 +244,6 @@ bool legIteration(Leg& leg, double step) {
 Leg makeLeg(const Skeleton& skeleton, const LimbChain& chain, const Mat4& girdleWorld,
             double ground, bool heel, double belowTolerance) {
     Leg leg;
-    leg.girdle = girdleWorld;
     leg.girdleAngle = sideViewAngle(girdleWorld);
     for (int k = 0; k < 3; ++k) {
         const Bone& bone = skeleton.bones[chain.bones[k]];
@@ -221,6 +258,7 @@ Leg makeLeg(const Skeleton& skeleton, const LimbChain& chain, const Mat4& girdle
         leg.maxAngles[k] = joint.dofs[side].maxDeg;
         leg.extents[k] = bone.extents;
     }
+    leg.upperBase.noalias() = girdleWorld * leg.fixed[0];
     leg.ground = ground;
     leg.heel = heel;
     leg.belowTolerance = belowTolerance;
@@ -248,13 +286,17 @@ bool gridStart(Leg& leg, double spacing) {
     std::array<double, 3> bestAngles{};
     std::array<Mat4, 3> world;
     for (double a0 : values[0]) {
-        world[0] = boneWorld(leg, leg.girdle, 0, a0);
+        placeBone(leg, world, 0, turnOf(a0));
         if (!boneValid(leg, world[0], 0, leg.girdleAngle + a0)) continue;
+        const Mat4 base1 = unturned(leg, world, 1);
         for (double a1 : values[1]) {
-            world[1] = boneWorld(leg, world[0], 1, a1);
+            world[1] = base1;
+            applyTurn(world[1], turnOf(a1));
             if (!boneValid(leg, world[1], 1, leg.girdleAngle + a0 + a1)) continue;
+            const Mat4 base2 = unturned(leg, world, 2);
             for (double a2 : values[2]) {
-                world[2] = boneWorld(leg, world[1], 2, a2);
+                world[2] = base2;
+                applyTurn(world[2], turnOf(a2));
                 if (!boneValid(leg, world[2], 2, leg.girdleAngle + a0 + a1 + a2)) continue;
                 const double height = contactHeight(leg, world);
                 if (height < best) best = height, bestAngles = {a0, a1, a2};
@@ -270,23 +312,24 @@ bool gridStart(Leg& leg, double spacing) {
 int iterateLeg(Leg& leg, double startStep, double tolerance, const LegPlacementParams& params) {
     int iterations = 0;
     double step = startStep;
+    LegPose pose = legPose(leg);  // kept up to date by each iteration
     while (iterations < params.maxIterations && step > kMinStepDeg &&
-           contactHeight(leg, legWorld(leg)) - leg.ground > tolerance) {
-        const bool mostUndone = legIteration(leg, step);
+           contactHeight(leg, pose.world) - leg.ground > tolerance) {
+        const bool mostUndone = legIteration(leg, step, pose);
         step *= mostUndone ? 0.5 : params.stepFactor;
         ++iterations;
     }
     return iterations;
 }
 
-double contactGap(const Leg& leg) { return contactHeight(leg, legWorld(leg)) - leg.ground; }
+double contactGap(const Leg& leg) { return contactHeight(leg, legPose(leg).world) - leg.ground; }
 
 void storeLeg(Skeleton& skeleton, const LimbChain& chain, const Leg& leg) {
     for (int k = 0; k < 3; ++k) {
         Joint& joint = skeleton.bones[chain.bones[k]].joint;
         joint.dofs[sideDof(joint)].angleDeg = leg.angles[k];
     }
-    const Mat4 foot = legWorld(leg)[2];
+    const Mat4 foot = legPose(leg).world[2];
     const double elevation = radToDeg(std::asin(std::min(1.0, std::abs(foot(1, 0)))));
     skeleton.bones[chain.bones[2]].hoof = elevation >= kHoofAngleDeg;
 }
@@ -309,7 +352,7 @@ LegPlacementResult placeLeg(Skeleton& skeleton, const LimbChain& chain, const Ma
     const bool reaches = jointHeight - length <= groundHeight;
     foldLeg(leg, chain.front);
     const double tolerance = params.tolerance * length;
-    bool started = reaches && legValid(leg, legWorld(leg));
+    bool started = reaches && legValid(leg, legPose(leg).world);
     if (started) result.iterations = iterateLeg(leg, params.startStepDeg, tolerance, params);
     if (reaches && (!started || contactGap(leg) > tolerance)) {
         Leg rescued = leg;

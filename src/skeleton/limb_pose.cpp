@@ -130,6 +130,7 @@ std::vector<LimbChain> findLimbChains(const Skeleton& skeleton) {
     linkChildren(skeleton, BoneKind::Hand, distal);
     linkChildren(skeleton, BoneKind::Foot, distal);
     std::vector<LimbChain> chains;
+    chains.reserve(kAttachmentCount);  // one per attachment with the default grammar
     for (std::size_t i = 0; i < n; ++i) {
         const Bone& upper = skeleton.bones[i];
         if (upper.side != Side::Left || upper.limb == LimbKind::None) continue;
@@ -170,6 +171,7 @@ namespace {
 std::vector<LegReach> legReaches(const Skeleton& skeleton, const std::vector<LimbChain>& chains,
                                  const std::vector<Mat4>& world) {
     std::vector<LegReach> legs;
+    legs.reserve(chains.size());
     for (const LimbChain& chain : chains) {
         if (chain.kind != LimbKind::Leg) continue;
         LegReach leg;
@@ -207,10 +209,12 @@ double highestGroundForFolding(const Skeleton& skeleton, const std::vector<LimbC
 /// to the body's lowest point and legs that cannot reach it with 0.8 of their length are
 /// lengthened until they can (body_ground.cpp). The heel probability then follows the formula
 /// for a ground that was not raised.
+/// `world` are the posed bones' world transforms (rib lengths move no frame).
 GroundHeight groundUnderBody(Skeleton& skeleton, const std::vector<LimbChain>& chains,
-                             std::vector<LegReach> legs, const GroundHeight& legGround) {
-    fitRibsAboveGround(skeleton, skeleton.worldTransforms(), legGround.height);
-    const double body = std::min(lowestBodyPoint(skeleton, skeleton.worldTransforms(), chains),
+                             std::span<const Mat4> world, std::vector<LegReach> legs,
+                             const GroundHeight& legGround) {
+    fitRibsAboveGround(skeleton, world, legGround.height);
+    const double body = std::min(lowestBodyPoint(skeleton, world, chains),
                                  highestGroundForFolding(skeleton, chains, legs));
     if (body >= legGround.height) return legGround;
     std::size_t legIndex = 0;
@@ -229,6 +233,22 @@ GroundHeight groundUnderBody(Skeleton& skeleton, const std::vector<LimbChain>& c
     GroundHeight ground = computeGroundHeight(legs, 0.0);
     ground.height += body;
     return ground;
+}
+
+/// Recomputes the world transforms of the limb chains' bones, whose joints the poses set, and of
+/// their descendants, as Skeleton::worldTransforms would; the other bones keep theirs.
+void updateLimbWorlds(const Skeleton& skeleton, const std::vector<LimbChain>& chains,
+                      std::vector<Mat4>& world) {
+    std::vector<char> moved(skeleton.bones.size(), 0);
+    for (const LimbChain& chain : chains)
+        for (int b : chain.bones) moved[static_cast<std::size_t>(b)] = 1;
+    for (std::size_t i = 0; i < skeleton.bones.size(); ++i) {  // parents come before children
+        const int parent = skeleton.bones[i].parent;
+        if (parent >= 0 && moved[static_cast<std::size_t>(parent)]) moved[i] = 1;
+        if (!moved[i]) continue;
+        const Mat4 local = skeleton.bones[i].joint.transform();
+        world[i] = parent < 0 ? local : Mat4(world[static_cast<std::size_t>(parent)] * local);
+    }
 }
 
 }  // namespace
@@ -256,14 +276,14 @@ void poseLimbs(Skeleton& skeleton, const SkeletonDesign& design) {
         }
     }
     const std::vector<LegReach> legs = legReaches(skeleton, chains, world);
+    updateLimbWorlds(skeleton, chains, world);
     double lowest = 0.0;
     if (legs.empty()) {
-        world = skeleton.worldTransforms();
         lowest = lowestBonePoint(skeleton.bones, world);
         if (!std::isfinite(lowest)) lowest = 0.0;
     }
     GroundHeight ground = computeGroundHeight(legs, lowest);
-    if (!legs.empty()) ground = groundUnderBody(skeleton, chains, legs, ground);
+    if (!legs.empty()) ground = groundUnderBody(skeleton, chains, world, legs, ground);
     skeleton.groundHeight = ground.height;
     skeleton.heelProbability = ground.heelProbability;
     skeleton.heelContact = !legs.empty() && design.heelDraw < ground.heelProbability;

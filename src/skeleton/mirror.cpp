@@ -14,6 +14,7 @@
 //   position_R = Q · position_L + u,  rest_R = Q · rest_L · S,
 //   every dof axis a → −S · a = (−aₓ, −a_y, a_z) with the same angle and limits,
 // because S · R(a, θ) · S = R(−S · a, θ) (conjugating a rotation by a reflection).
+#include <algorithm>
 #include <cmath>
 
 #include "skeleton/skeleton_build.hpp"
@@ -49,13 +50,39 @@ Joint mirrorJoint(const Joint& left, const Mat4& parentChange) {
     return right;
 }
 
+/// World transforms of the bones whose frames the twins need, other entries unset: the parents of
+/// unmirrored Left bones that are not Left themselves, and their ancestors (below a Left parent
+/// the twin's joint is S · local · S, and the twins' own frames are never needed).
+std::vector<Mat4> parentWorlds(const Skeleton& skeleton) {
+    const std::size_t n = skeleton.bones.size();
+    std::vector<char> needed(n, 0);
+    for (const Bone& bone : skeleton.bones) {
+        if (bone.side != Side::Left || bone.twin >= 0 || bone.parent < 0) continue;
+        if (skeleton.bones[bone.parent].side != Side::Left) needed[bone.parent] = 1;
+    }
+    for (std::size_t i = n; i-- > 0;) {  // parents come before children
+        if (needed[i] && skeleton.bones[i].parent >= 0) needed[skeleton.bones[i].parent] = 1;
+    }
+    std::vector<Mat4> world(n);
+    for (std::size_t i = 0; i < n; ++i) {  // as Skeleton::worldTransforms
+        if (!needed[i]) continue;
+        const Mat4 local = skeleton.bones[i].joint.transform();
+        const int parent = skeleton.bones[i].parent;
+        world[i] = parent < 0 ? local : Mat4(world[static_cast<std::size_t>(parent)] * local);
+    }
+    return world;
+}
+
 }  // namespace
 
 void mirrorSkeleton(Skeleton& skeleton) {
     const std::size_t leftCount = skeleton.bones.size();
-    // World transforms of the bones present before mirroring (parents come first, so a left
-    // parent's twin exists before its children are mirrored).
-    std::vector<Mat4> world = skeleton.worldTransforms();
+    const std::vector<Mat4> world = parentWorlds(skeleton);
+    const auto unmirrored =
+        std::count_if(skeleton.bones.begin(), skeleton.bones.end(),
+                      [](const Bone& b) { return b.side == Side::Left && b.twin < 0; });
+    skeleton.bones.reserve(leftCount + static_cast<std::size_t>(unmirrored));
+    // Parents come first, so a left parent's twin exists before its children are mirrored.
     for (std::size_t i = 0; i < leftCount; ++i) {
         const Bone& left = skeleton.bones[i];
         if (left.side != Side::Left || left.twin >= 0) continue;  // mirrored already
@@ -65,21 +92,18 @@ void mirrorSkeleton(Skeleton& skeleton) {
         Mat4 parentChange = Mat4::Identity();  // X = P_R⁻¹ · M · P_L
         if (left.parent >= 0) {
             const Bone& parent = skeleton.bones[left.parent];
-            const Mat4& parentLeft = world[left.parent];
             if (parent.side == Side::Left) {
                 right.parent = parent.twin;
                 parentChange.topLeftCorner<3, 3>() = kReflectZ;  // exact: S · local · S
             } else {
+                const Mat4& parentLeft = world[left.parent];
                 parentChange = rigidInverse(parentLeft) * reflectWorld(parentLeft);
             }
         } else {
             parentChange = reflectWorld(Mat4::Identity());
         }
         right.joint = mirrorJoint(left.joint, parentChange);
-        const int rightIndex = static_cast<int>(skeleton.bones.size());
-        world.push_back(right.parent < 0 ? right.joint.transform()
-                                         : Mat4(world[right.parent] * right.joint.transform()));
-        skeleton.bones[i].twin = rightIndex;
+        skeleton.bones[i].twin = static_cast<int>(skeleton.bones.size());
         skeleton.bones.push_back(right);
     }
 }
