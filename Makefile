@@ -8,7 +8,7 @@ CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
 .PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load blender-import format \
-        format-check bench bench-peers fuzz fuzz-smoke batch-check clean
+        format-check bench bench-peers fuzz fuzz-smoke batch-check check-floats clean
 
 all: build
 
@@ -95,6 +95,13 @@ format-check: deps
 
 bench: build
 	$(BUILD)/ramus_bench --benchmark_counters_tabular=true
+
+# Every one of the 2^32 floats through the GLB's float text (apps/float_text_exhaustive): reads
+# back exactly, at most 15 characters, the shortest digits. Minutes on all cores.
+check-floats: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target float_text_exhaustive
+	@$(BUILD)/float_text_exhaustive
 
 bench-peers: build
 	@cd bench/peers && npm ci --no-audit --no-fund --loglevel=error
