@@ -42,6 +42,18 @@
 #include "welded_builder.hpp"
 
 namespace ramus::detail {
+namespace {
+
+// Whether ring b lies wholly ahead of ring a's plane and a wholly behind b's (normals along
+// the limb): a ring of radius r tilted by θ against a plane reaches r·sin θ off it.
+bool ringsApart(const RingPlace& a, const RingPlace& b) {
+    const Vec3 step = b.center - a.center;
+    const double cosine = std::clamp(a.normal.dot(b.normal), -1.0, 1.0);
+    const double sine = std::sqrt(1.0 - cosine * cosine);
+    return step.dot(a.normal) > b.radius * sine && step.dot(b.normal) > a.radius * sine;
+}
+
+}  // namespace
 
 WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
     : tree_(tree), params_(params) {
@@ -85,6 +97,9 @@ void WeldBuilder::gatherLimbRings(std::int32_t l) {
     auto atPoint = [&](std::uint32_t k) { return ringAtPoint(s, limb, k); };
     rings_.clear();
     rings_.push_back({startJunction ? ringOnLimb(s, limb, false, s0) : atPoint(0), 0.0});
+    RingPlace end =
+        endJunction ? ringOnLimb(s, limb, true, junctions_.endOffset[li]) : atPoint(last);
+    if (endJunction) end.normal = -end.normal;  // rings face along the limb
     const double maxK = params_.tube.curveReduction;
     for (std::uint32_t k = 1; k < last; ++k) {
         const std::uint32_t p = limb.first + k;
@@ -95,11 +110,13 @@ void WeldBuilder::gatherLimbRings(std::int32_t l) {
             const Vec3 out = (s.pointPosition[p + 1] - s.pointPosition[p]).normalized();
             if (in.dot(out) > maxK) continue;
         }
-        rings_.push_back({atPoint(k), 0.0});
+        const RingPlace inner = atPoint(k);
+        // A ring at an inner node faces the bisector of its bend, a junction's ring faces the
+        // limb: close to each other they cross, and the tube between them folds into the hull.
+        if (startJunction && rings_.size() == 1 && !ringsApart(rings_[0].place, inner)) continue;
+        if (endJunction && !ringsApart(inner, end)) continue;
+        rings_.push_back({inner, 0.0});
     }
-    RingPlace end =
-        endJunction ? ringOnLimb(s, limb, true, junctions_.endOffset[li]) : atPoint(last);
-    if (endJunction) end.normal = -end.normal;  // rings face along the limb
     rings_.push_back({end, 0.0});
 
     double v = keyV_[static_cast<std::size_t>(limb.startKey)];

@@ -38,12 +38,15 @@ BranchTree growLSystem(const std::string& file, int derivations = -1) {
     return interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings)).tree;
 }
 
-// Closed, consistently wound, genus 0 per closed part, positive volume. Returns the report.
+// Closed, consistently wound, genus 0 per closed part, positive volume. Returns the report
+// (and the mesh through `meshOut`).
 WeldReport expectClosedSurfaces(const BranchTree& tree, const WeldedMeshParams& params,
-                                const std::string& name) {
+                                const std::string& name, Mesh* meshOut = nullptr) {
     SCOPED_TRACE(name);
     WeldReport report;
-    const Mesh mesh = buildWeldedTreeMesh(tree, params, &report);
+    Mesh local;
+    Mesh& mesh = meshOut ? *meshOut : local;
+    mesh = buildWeldedTreeMesh(tree, params, &report);
     test::writeWeldedGlb(mesh, name);
     if (mesh.triangleCount() == 0) return report;
     const test::Topology top = test::analyzeTopology(mesh);
@@ -122,6 +125,31 @@ TEST(WeldedExamples, DenseLSystemExamplesStillMeshAndReportTheirCompromises) {
     }
 }
 
+// Triangle pairs that intersect with at least one junction triangle in them (the junctions
+// are the last triangles of the mesh).
+std::size_t junctionIntersections(const Mesh& mesh, const WeldReport& report) {
+    const std::size_t firstJunction = mesh.triangleCount() - report.junctionTriangles;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    test::countSelfIntersections(mesh, 1u << 22, &pairs);
+    return static_cast<std::size_t>(std::count_if(pairs.begin(), pairs.end(), [&](auto pair) {
+        return std::max(pair.first, pair.second) >= firstJunction;
+    }));
+}
+
+// Junction–triangle intersections per colonization tree as measured (session 10) once rings at
+// inner nodes that cross a junction's ring are left out (docs/welded.md, "Quality and
+// limits"); before that they were 5–184 per tree. They must not grow. conifer's are all
+// between the two full junctions around its one crossing limb.
+std::size_t junctionIntersectionBound(const std::string& tree) {
+    static const std::vector<std::pair<std::string, std::size_t>> bounds = {
+        {"broadleaf_0", 10}, {"conifer_0", 49},   {"multi_trunk_0", 20}, {"obstacle_0", 5},
+        {"roots_0", 12},     {"two_trees_0", 11}, {"two_trees_1", 11}};
+    for (const auto& [name, bound] : bounds) {
+        if (name == tree) return bound;
+    }
+    return 0;
+}
+
 TEST(WeldedExamples, EveryColonizationExampleIsClosedGenusZeroSurfaces) {
     for (const std::string& file : exampleFiles("/examples/colonize", ".json")) {
         const ColonizeConfig config = loadColonizeConfig(file);
@@ -129,9 +157,12 @@ TEST(WeldedExamples, EveryColonizationExampleIsClosedGenusZeroSurfaces) {
         WeldedMeshParams params;
         applyMeshOverrides(config, params.tube);
         for (std::size_t t = 0; t < result.trees.size(); ++t) {
-            const WeldReport report = expectClosedSurfaces(
-                result.trees[t], params, "colonize_" + stem(file) + "_" + std::to_string(t));
+            const std::string tree = stem(file) + "_" + std::to_string(t);
+            Mesh mesh;
+            const WeldReport report =
+                expectClosedSurfaces(result.trees[t], params, "colonize_" + tree, &mesh);
             SCOPED_TRACE(file);
+            EXPECT_LE(junctionIntersections(mesh, report), junctionIntersectionBound(tree)) << tree;
             EXPECT_EQ(report.fallbacks, 0u);
             EXPECT_EQ(report.crowded, 0u);
             EXPECT_EQ(report.components, 1u);
