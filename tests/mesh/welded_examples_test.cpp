@@ -201,22 +201,18 @@ TEST(WeldedExamples, SmallExamplesHaveNoSelfIntersections) {
 
 // tree_3d's branches cross each other in the skeleton at 4 derivations, so its tubes do
 // intersect; the junctions (the last triangles of the mesh) must not take part in any of it.
-// (tree_3d_tropism is left out: its bent limbs give 15 junction–tube intersections, an open
-// defect listed in docs/welded.md.)
-TEST(WeldedExamples, JunctionTrianglesOfTree3dIntersectNothing) {
-    for (const char* file : {"tree_3d.lsys"}) {
+// tree_3d_tropism's bent limbs still give 15 junction–tube intersections there, an open defect
+// listed in docs/welded.md: that count must not grow.
+TEST(WeldedExamples, Tree3dJunctionsIntersectNothingTropismNoMoreThanMeasured) {
+    for (const auto& [file, bound] :
+         {std::pair{"tree_3d.lsys", 0u}, {"tree_3d_tropism.lsys", 15u}}) {
         SCOPED_TRACE(file);
         const BranchTree tree =
             growLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/" + std::string(file), 4);
         WeldReport report;
         const Mesh mesh = buildWeldedTreeMesh(tree, {}, &report);
         ASSERT_GT(report.junctionTriangles, 100u);
-        const std::size_t firstJunction = mesh.triangleCount() - report.junctionTriangles;
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-        test::countSelfIntersections(mesh, 1u << 20, &pairs);
-        for (const auto& [s, t] : pairs) {
-            EXPECT_LT(std::max(s, t), firstJunction) << "junction triangle in " << s << ", " << t;
-        }
+        EXPECT_LE(junctionIntersections(mesh, report), std::size_t{bound});
     }
 }
 
