@@ -4,6 +4,11 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 2.1 REQUIRED)
 # fmt: only its Dragonbox float-to-decimal core, header-only (src/core/float_text.cpp).
 find_package(fmt 9 REQUIRED)
+# CGAL (Debian libcgal-dev, header-only, with GMP/MPFR): its Polygon Mesh Processing
+# autorefinement resolves the intersections for the solid union (src/mesh/solid_union.cpp).
+# Licence: CGAL's Polygon Mesh Processing is GPL-3.0-or-later (docs/welded.md, "Solid union").
+set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
+find_package(CGAL 5.5 REQUIRED)
 if(RAMUS_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

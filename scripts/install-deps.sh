@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config clang clang-format
           libeigen3-dev nlohmann-json3-dev libcli11-dev libcpp-httplib-dev libnanoflann-dev
-          libstb-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev libjemalloc-dev libfmt-dev
+          libstb-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev libjemalloc-dev libfmt-dev libcgal-dev
           chromium blender python3-numpy)
 missing=()
 for p in "${packages[@]}"; do

@@ -8,6 +8,7 @@
 
 #include "ramus/branch_tree.hpp"
 #include "ramus/mesh.hpp"
+#include "ramus/solid_union.hpp"
 #include "ramus/tube_mesher.hpp"
 
 namespace ramus {
@@ -20,6 +21,12 @@ struct WeldedMeshParams {
     /// Clearance between the branches' rings at a junction, as a fraction of the ring's own
     /// radius (> 0; 0.05 = 5 %). Larger values move the rings farther from the branch node.
     double junctionMargin = 0.05;
+    /// Replace the surfaces by the boundary of the solid they enclose (unionClosedSurfaces):
+    /// pieces left by fallbacks and crossings become one surface wherever they overlap, and
+    /// branches that cross in the skeleton stop piercing each other. Slower (CGAL's exact
+    /// autorefinement, about 50 k triangles/s; docs/welded.md, "Solid union"); junction
+    /// triangles are then no longer the last ones of the index buffer.
+    bool solidUnion = false;
 };
 
 /// What the welder did, for tests and --stats.
@@ -37,6 +44,7 @@ struct WeldReport {
     std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
     /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).
     std::size_t junctionTriangles = 0;
+    SolidUnionReport solidUnion;  ///< with WeldedMeshParams::solidUnion
 };
 
 /// Meshes `tree` as closed surfaces: one per part of the tree connected by drawn edges

@@ -46,7 +46,7 @@ private:
     RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
                         const WindSample& wind);
     void emitSides(std::uint32_t a, std::uint32_t b, int n);
-    void emitCap(const RingRecord& ring, const Vec3& normal, bool tip);
+    void emitCap(const RingRecord& ring, const Vec3& normal, bool tip, const Vec3& centre);
     void dropUnusedVertices();
 
     // welded_junction_mesh.cpp
@@ -78,6 +78,7 @@ private:
         RingRecord ring;
         bool hole;   // an arm's ring (its disc is cut out) or an absorbed ring (plain points)
         bool start;  // the ring starts its limb (else it ends it)
+        Vec3 node;   // the branch node where the ring's limb meets the junction
     };
     std::vector<HullRing> hullRings_;
     std::vector<Vec3> points_;

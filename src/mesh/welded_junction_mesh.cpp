@@ -18,26 +18,16 @@
 //   the exact positions. The hull works on the rings' double-precision positions.
 // - Every hole is checked: its apex must carry n faces, each on one ring edge, all wound the way
 //   the tube expects. A junction failing any check (not seen on the examples) is closed
-//   conservatively instead: each arm's ring gets a flat cap, absorbed rings their own hull.
+//   conservatively instead: each arm's ring gets a cone past the node, absorbed rings their
+//   own hull.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
+#include "fixed_hash.hpp"
 #include "welded_builder.hpp"
 
 namespace ramus::detail {
-namespace {
-
-// SplitMix64 (Steele, Lea, Flood 2014): a fixed hash for the perturbation, in [-1, 1].
-double hashUnit(std::uint64_t x) {
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    x ^= x >> 31;
-    return static_cast<double>(x >> 11) * (2.0 / 9007199254740992.0) - 1.0;
-}
-
-}  // namespace
 
 // Rings of the junction's arms (holes) and of the limbs inside it (plain points).
 void WeldBuilder::gatherJunction(NodeId cluster) {
@@ -47,12 +37,14 @@ void WeldBuilder::gatherJunction(NodeId cluster) {
         const auto i = static_cast<std::size_t>(m);
         auto visit = [&](std::int32_t l) {
             const auto li = static_cast<std::size_t>(l);
-            const bool start = s.limbs[li].startKey == m;
+            const WeldLimb& limb = s.limbs[li];
+            const bool start = limb.startKey == m;
+            const Vec3& node = s.pointPosition[start ? limb.first : limb.first + limb.count - 1];
             if (!junctions_.absorbed[li]) {
-                hullRings_.push_back({start ? startRing_[li] : endRing_[li], true, start});
+                hullRings_.push_back({start ? startRing_[li] : endRing_[li], true, start, node});
             } else if (start) {  // inside: listed once, from its start
                 for (std::uint32_t d = discFirst_[li]; d < discFirst_[li + 1]; ++d) {
-                    hullRings_.push_back({discs_[d], false, true});
+                    hullRings_.push_back({discs_[d], false, true, node});
                 }
             }
         };
@@ -143,10 +135,20 @@ std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
     return ring.base + static_cast<std::uint32_t>(k);
 }
 
-// Conservative close: flat caps on the arms' rings; the absorbed rings' hull on its own.
+// Conservative close: each arm's ring closed by a cone that reaches a quarter of the ring's
+// radius past the branch node, so the arms overlap around the node as tubes do (no gap
+// between them, and the solid union joins them into one surface); a flat cap where the node
+// is not in front of the ring. The absorbed rings' hull on its own.
 void WeldBuilder::fallbackJunction() {
     for (const HullRing& h : hullRings_) {
-        if (h.hole) emitCap(h.ring, -h.ring.outward, !h.start);
+        if (!h.hole) continue;
+        const Vec3 capNormal = -h.ring.outward;
+        const Vec3 toNode = h.node - h.ring.center;
+        const double ahead = toNode.dot(capNormal);
+        const Vec3 centre = ahead > 0.05 * h.ring.radius
+                                ? Vec3(h.node + 0.25 * h.ring.radius * toNode.normalized())
+                                : h.ring.center;
+        emitCap(h.ring, capNormal, !h.start, centre);
     }
     const bool anyAbsorbed = std::any_of(hullRings_.begin(), hullRings_.end(),
                                          [](const HullRing& h) { return !h.hole; });

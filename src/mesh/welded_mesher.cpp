@@ -143,7 +143,7 @@ void WeldBuilder::meshLimb(std::int32_t l) {
     if (junctions_.cluster[static_cast<std::size_t>(limb.startKey)] >= 0) {
         startRing_[static_cast<std::size_t>(l)] = previous;
     } else {
-        emitCap(previous, -normal, false);  // the base of a tree part
+        emitCap(previous, -normal, false, previous.center);  // the base of a tree part
     }
     for (std::size_t k = 1; k < rings_.size(); ++k) {
         const RingPlace& place = rings_[k].place;
@@ -161,7 +161,7 @@ void WeldBuilder::meshLimb(std::int32_t l) {
         previous.outward = -normal;
         endRing_[static_cast<std::size_t>(l)] = previous;
     } else {
-        emitCap(previous, normal, true);
+        emitCap(previous, normal, true, previous.center);
     }
 }
 
@@ -236,18 +236,20 @@ void WeldBuilder::emitSides(std::uint32_t a, std::uint32_t b, int n) {
     }
 }
 
-// Flat fan facing `normal` around a centre vertex, as buildTubeMesh's caps: own vertices
-// (positions copied bit-exactly from the ring), disc UVs, tangent e1. `tip`: the ring faces
-// the same way as the cap (else the cap closes the ring's back).
-void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip) {
+// Fan around a centre vertex at `centre` (the ring's centre: a flat cap as buildTubeMesh's;
+// elsewhere a cone), shaded as facing `normal`: own vertices (positions copied bit-exactly
+// from the ring), disc UVs, tangent e1. `tip`: the ring faces the same way as the cap (else
+// the cap closes the ring's back).
+void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip,
+                          const Vec3& centre) {
     const AngleTable& angles = table(ring.n);
     const auto n = static_cast<std::uint32_t>(ring.n);
-    const auto centre = static_cast<std::uint32_t>(mesh_.positions.size());
+    const auto hub = static_cast<std::uint32_t>(mesh_.positions.size());
     const Vec3f nf = normal.cast<float>();
     const Vec4f tangent(static_cast<float>(ring.e1.x()), static_cast<float>(ring.e1.y()),
                         static_cast<float>(ring.e1.z()), 1.0f);
     const float vSign = tip ? -0.5f : 0.5f;  // keeps cross(n, e1) pointing to decreasing v
-    mesh_.positions.push_back(ring.center.cast<float>());
+    mesh_.positions.push_back(centre.cast<float>());
     mesh_.uvs.emplace_back(0.5f, 0.5f);
     for (std::uint32_t i = 0; i < n; ++i) {
         mesh_.positions.push_back(mesh_.positions[ring.base + i]);
@@ -257,9 +259,9 @@ void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip) 
     mesh_.tangents.insert(mesh_.tangents.end(), n + 1, tangent);
     if (params_.tube.windAttributes) windOut_.append(n + 1, ring.wind);
     for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint32_t a = centre + 1 + i;
-        const std::uint32_t b = centre + 1 + (i + 1 == n ? 0 : i + 1);
-        mesh_.indices.insert(mesh_.indices.end(), {centre, tip ? a : b, tip ? b : a});
+        const std::uint32_t a = hub + 1 + i;
+        const std::uint32_t b = hub + 1 + (i + 1 == n ? 0 : i + 1);
+        mesh_.indices.insert(mesh_.indices.end(), {hub, tip ? a : b, tip ? b : a});
     }
 }
 
@@ -363,7 +365,11 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
         empty.name = "tree";
         return empty;
     }
-    return detail::WeldBuilder(tree, params).build(report);
+    Mesh mesh = detail::WeldBuilder(tree, params).build(report);
+    if (params.solidUnion) {
+        unionClosedSurfaces(mesh, report != nullptr ? &report->solidUnion : nullptr);
+    }
+    return mesh;
 }
 
 }  // namespace ramus

@@ -1,0 +1,47 @@
+// Solid union of overlapping closed surfaces (issue 9, "a single closed 2-manifold"): where a
+// welded tree mesh still consists of several closed pieces that overlap (fallback junctions,
+// crossing limbs of dense L-systems) or one piece that runs through itself (branches crossing
+// in the skeleton), the surface of the union of the solids they bound replaces them: no
+// triangle pierces another, every edge is shared by two triangles, and pieces that overlap
+// become one surface. CGAL's autorefinement (Polygon Mesh Processing) cuts the triangles along
+// their intersection curves; a winding number per patch keeps the outer ones (Zhou, Grinspun,
+// Zorin, Jacobson 2016, "Mesh arrangements for solid geometry", §4).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "ramus/mesh.hpp"
+
+namespace ramus {
+
+/// What unionClosedSurfaces did, for tests and --stats.
+struct SolidUnionReport {
+    bool applied = false;  ///< the mesh was replaced by the union's surface
+    std::string failure;   ///< why not, when !applied (the mesh is then unchanged)
+    std::size_t inputComponents = 0;   ///< closed surfaces of the input (welded by position)
+    std::size_t outputComponents = 0;  ///< closed surfaces of the result
+    std::size_t patches = 0;      ///< pieces of surface between the intersection curves
+    std::size_t keptPatches = 0;  ///< of those, the ones on the union's boundary
+    std::size_t newVertices = 0;  ///< positions on the intersection curves
+    std::size_t attempts = 0;     ///< tries with different moves (at most 3)
+};
+
+/// Replaces the surfaces of `mesh` by the boundary of the union of the solids they bound.
+/// The input's triangles, welded by position, must form closed, consistently outward-wound
+/// 2-manifold surfaces (seam and cap vertices that repeat a position bit-exactly are welded, as
+/// the tube and welded meshers write them); they may overlap each other and themselves.
+/// Positions are first moved by at most 4 float steps (a fixed hash of the welded vertex) so
+/// that no exact coincidences remain (coplanar faces of a flat plant, rings drawn twice).
+/// Triangles away from all intersections keep their corners (moved as above) and attributes;
+/// triangles cut by another are split along the intersection curves, and every corner of a
+/// piece interpolates normal, tangent, UV and custom attributes of the input triangle it came
+/// from (normals and tangents renormalized). Primitives are kept in order, each with the
+/// pieces of its own triangles. The result is checked before it replaces the mesh: every edge
+/// (welded by position) is used by exactly two triangles in opposite directions. On any
+/// failure (input not closed or not manifold, a degenerate configuration the refinement does
+/// not handle, a result that fails the check) the mesh is left as it was and the reason goes
+/// to report->failure. Deterministic. Returns report.applied.
+bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr);
+
+}  // namespace ramus

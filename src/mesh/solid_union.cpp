@@ -1,0 +1,548 @@
+// Solid union of overlapping closed surfaces (include/ramus/solid_union.hpp).
+//
+// Based on: Zhou, Grinspun, Zorin, Jacobson 2016, "Mesh arrangements for solid geometry"
+// (resolve all intersections, then keep the patches whose winding number is 0 on one side and
+// positive on the other); the resolution is CGAL's autorefinement (Polygon Mesh Processing,
+// corefinement.h: exact predicates, intersection curves inserted as constrained edges).
+//
+// Steps:
+// 1. Weld the input by position and move each welded vertex by at most 4 float steps (fixed
+//    hash): exact coincidences — faces of a flat plant lying in one plane, a ring drawn twice,
+//    three sheets through one intersection edge — are cases the refinement rejects
+//    ("triple intersection"); after the move they are in general position, and the moved
+//    positions are floats, so untouched triangles keep exactly representable corners.
+// 2. Autorefine. A visitor carries each input triangle's index to the pieces it is cut into.
+// 3. Patches: connected regions between intersection edges. The winding number of the whole
+//    input is constant on each side of a patch; one ray from the centre of the patch's largest
+//    triangle, roughly along its normal, counts signed crossings (+1 leaving a surface): the
+//    patch bounds the union iff the count outside it is 0. Three slightly different rays vote,
+//    so a ray through an edge (counted twice) cannot flip the decision.
+// 4. Kept pieces become output triangles; corners interpolate the attributes of the input
+//    triangle the piece came from (corners that are input corners copy them exactly).
+// 5. Check before replacing: every edge welded by position is used once in each direction.
+#include "ramus/solid_union.hpp"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+#include "fixed_hash.hpp"
+
+namespace ramus {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using FaceIndex = SurfaceMesh::Face_index;
+using VertexIndex = SurfaceMesh::Vertex_index;
+using FaceTree = CGAL::AABB_tree<
+    CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>>>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+constexpr std::uint32_t kUnknown = std::numeric_limits<std::uint32_t>::max();
+
+// Per vertex: the index of its position among the distinct positions (bit-exact), numbered
+// in order of first appearance.
+std::vector<std::uint32_t> weldByPosition(const std::vector<Vec3f>& positions,
+                                          std::uint32_t* distinct) {
+    struct Key {
+        std::array<std::uint32_t, 3> bits;
+        std::uint32_t vertex;
+    };
+    std::vector<Key> keys(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        // +0.0 and -0.0 are one position.
+        const Vec3f p = positions[i] + Vec3f::Zero();
+        std::memcpy(keys[i].bits.data(), p.data(), sizeof(keys[i].bits));
+        keys[i].vertex = static_cast<std::uint32_t>(i);
+    }
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+        return a.bits != b.bits ? a.bits < b.bits : a.vertex < b.vertex;
+    });
+    std::vector<std::uint32_t> first(positions.size());  // per vertex: first vertex there
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const bool same = k > 0 && keys[k].bits == keys[k - 1].bits;
+        first[keys[k].vertex] = same ? first[keys[k - 1].vertex] : keys[k].vertex;
+    }
+    std::vector<std::uint32_t> id(positions.size());
+    std::uint32_t next = 0;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        id[i] = first[i] == i ? next++ : id[first[i]];
+    }
+    *distinct = next;
+    return id;
+}
+
+std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+}
+
+// Connected components of the triangles over welded vertex ids.
+std::size_t countComponents(const std::vector<std::uint32_t>& weld, std::uint32_t distinct,
+                            const std::vector<std::uint32_t>& indices) {
+    std::vector<std::uint32_t> parent(distinct);
+    std::iota(parent.begin(), parent.end(), 0u);
+    std::vector<char> used(distinct, 0);
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const std::uint32_t a = findRoot(parent, weld[indices[t]]);
+        used[a] = 1;
+        for (int k = 1; k < 3; ++k) {
+            const std::uint32_t b = findRoot(parent, weld[indices[t + k]]);
+            used[b] = 1;
+            parent[b] = a;
+        }
+    }
+    std::size_t count = 0;
+    for (std::uint32_t v = 0; v < distinct; ++v) count += used[v] && findRoot(parent, v) == v;
+    return count;
+}
+
+// Whether every edge (welded) is used exactly once in each direction and no triangle has two
+// corners at one position.
+bool closedManifold(const std::vector<std::uint32_t>& weld,
+                    const std::vector<std::uint32_t>& indices) {
+    std::vector<std::uint64_t> directed;
+    directed.reserve(indices.size());
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = weld[indices[t + k]];
+            const std::uint32_t b = weld[indices[t + (k + 1) % 3]];
+            if (a == b) return false;
+            directed.push_back(std::uint64_t{a} << 32 | b);
+        }
+    }
+    std::sort(directed.begin(), directed.end());
+    for (std::size_t i = 0; i < directed.size(); ++i) {
+        if (i > 0 && directed[i] == directed[i - 1]) return false;  // used twice one way
+        const std::uint64_t reverse = directed[i] << 32 | directed[i] >> 32;
+        if (!std::binary_search(directed.begin(), directed.end(), reverse)) return false;
+    }
+    return true;
+}
+
+// Removes triangles with two corners at one position: pieces so thin that rounding the new
+// positions to float joined two of their corners (an edge collapse, which leaves the rest of
+// the surface closed). Primitive ranges shrink with them.
+void dropCollapsedTriangles(const std::vector<std::uint32_t>& weld, Mesh& mesh) {
+    std::size_t kept = 0;
+    std::size_t primitive = 0;
+    std::uint32_t primitiveEnd = mesh.primitives.empty() ? 0 : mesh.primitives[0].indexCount;
+    std::vector<std::uint32_t> keptPerPrimitive(mesh.primitives.size(), 0);
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        while (primitive + 1 < mesh.primitives.size() && t >= primitiveEnd) {
+            primitiveEnd += mesh.primitives[++primitive].indexCount;
+        }
+        const std::uint32_t a = weld[mesh.indices[t]];
+        const std::uint32_t b = weld[mesh.indices[t + 1]];
+        const std::uint32_t c = weld[mesh.indices[t + 2]];
+        if (a == b || b == c || c == a) continue;
+        std::copy_n(mesh.indices.begin() + static_cast<std::ptrdiff_t>(t), 3,
+                    mesh.indices.begin() + static_cast<std::ptrdiff_t>(kept));
+        kept += 3;
+        if (!mesh.primitives.empty()) keptPerPrimitive[primitive] += 3;
+    }
+    mesh.indices.resize(kept);
+    std::uint32_t first = 0;
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        mesh.primitives[p].firstIndex = first;
+        mesh.primitives[p].indexCount = keptPerPrimitive[p];
+        first += keptPerPrimitive[p];
+    }
+    std::erase_if(mesh.primitives, [](const MeshPrimitive& p) { return p.indexCount == 0; });
+}
+
+// Carries the input triangle's index to the pieces the refinement cuts it into.
+struct OriginVisitor : PMP::Corefinement::Default_visitor<SurfaceMesh> {
+    SurfaceMesh::Property_map<FaceIndex, std::uint32_t> origin;
+    std::uint32_t current = kUnknown;
+    void before_subface_creations(FaceIndex split, SurfaceMesh&) { current = origin[split]; }
+    void after_subface_created(FaceIndex piece, SurfaceMesh&) { origin[piece] = current; }
+};
+
+Vector faceNormal(const SurfaceMesh& m, FaceIndex f) {
+    const auto h = m.halfedge(f);
+    const Point& a = m.point(m.source(h));
+    const Point& b = m.point(m.target(h));
+    const Point& c = m.point(m.target(m.next(h)));
+    return CGAL::cross_product(b - a, c - a);
+}
+
+// Signed crossings of the ray from the centre of `f` along direction `d`, `f` itself left out:
+// the winding number of the input just outside f (all surfaces wound outward).
+int windingOutside(const SurfaceMesh& m, const FaceTree& tree, FaceIndex f, const Vector& d,
+                   std::vector<FaceIndex>& hits) {
+    const auto h = m.halfedge(f);
+    const Point centre = CGAL::centroid(m.point(m.source(h)), m.point(m.target(h)),
+                                        m.point(m.target(m.next(h))));
+    hits.clear();
+    tree.all_intersected_primitives(Kernel::Ray_3(centre, d), std::back_inserter(hits));
+    int winding = 0;
+    for (FaceIndex hit : hits) {
+        if (hit == f) continue;
+        winding += faceNormal(m, hit) * d > 0.0 ? 1 : -1;
+    }
+    return winding;
+}
+
+// Per patch: whether it bounds the union (winding 0 just outside it, by a vote of 3 rays).
+std::vector<char> classifyPatches(const SurfaceMesh& m,
+                                  const SurfaceMesh::Property_map<FaceIndex, std::size_t>& patch,
+                                  std::size_t patches) {
+    std::vector<FaceIndex> largest(patches);
+    std::vector<double> area(patches, -1.0);
+    for (FaceIndex f : m.faces()) {
+        const double a = faceNormal(m, f).squared_length();
+        const std::size_t p = patch[f];
+        if (a > area[p]) {
+            area[p] = a;
+            largest[p] = f;
+        }
+    }
+    FaceTree tree(faces(m).first, faces(m).second, m);
+    std::vector<FaceIndex> hits;
+    std::vector<char> keep(patches, 0);
+    for (std::size_t p = 0; p < patches; ++p) {
+        Vector n = faceNormal(m, largest[p]);
+        n = n / std::sqrt(n.squared_length());
+        int votes = 0;
+        for (std::uint64_t ray = 0; ray < 3; ++ray) {
+            const std::uint64_t seed = 3 * (3 * p + ray);
+            const Vector d = n + 0.1 * Vector(detail::hashUnit(seed), detail::hashUnit(seed + 1),
+                                              detail::hashUnit(seed + 2));
+            votes += windingOutside(m, tree, largest[p], d, hits) == 0;
+        }
+        keep[p] = votes >= 2;
+    }
+    return keep;
+}
+
+// Interpolates the input's vertex attributes at points of its triangles into a new mesh.
+class CornerWriter {
+public:
+    CornerWriter(const Mesh& input, const std::vector<Vec3>& movedCorners, Mesh& output)
+        : in_(input), moved_(movedCorners), out_(output) {
+        for (const VertexAttribute& a : input.attributes) {
+            out_.attributes.push_back({a.name, a.components, {}});
+        }
+    }
+
+    // The output vertex for point `p` (index `vertex` in the refined mesh) of a piece of input
+    // triangle `t`.
+    std::uint32_t corner(std::uint32_t t, std::uint32_t vertex, const Point& p) {
+        const std::uint32_t* tri = &in_.indices[3 * std::size_t{t}];
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& c = moved_[3 * std::size_t{t} + k];
+            if (c.x() == p.x() && c.y() == p.y() && c.z() == p.z()) return copy(tri[k], vertex, c);
+        }
+        const std::uint64_t key = std::uint64_t{vertex} << 32 | t;
+        const auto found = interpolated_.find(key);
+        if (found != interpolated_.end()) return found->second;
+        const std::uint32_t made = interpolate(t, Vec3(p.x(), p.y(), p.z()));
+        interpolated_.emplace(key, made);
+        return made;
+    }
+
+    std::size_t interpolatedCount() const { return interpolated_.size(); }
+
+private:
+    // Input vertex `v` at refined vertex `vertex` (moved to `p`).
+    std::uint32_t copy(std::uint32_t v, std::uint32_t vertex, const Vec3& p) {
+        const std::uint64_t key = std::uint64_t{v} << 32 | vertex;
+        const auto found = copied_.find(key);
+        if (found != copied_.end()) return found->second;
+        const std::uint32_t made = append(p.cast<float>());
+        if (!in_.normals.empty()) out_.normals.push_back(in_.normals[v]);
+        if (!in_.tangents.empty()) out_.tangents.push_back(in_.tangents[v]);
+        if (!in_.uvs.empty()) out_.uvs.push_back(in_.uvs[v]);
+        for (std::size_t a = 0; a < in_.attributes.size(); ++a) {
+            const auto width = static_cast<std::size_t>(in_.attributes[a].components);
+            const auto first = in_.attributes[a].values.begin() +
+                               static_cast<std::ptrdiff_t>(width * v);
+            out_.attributes[a].values.insert(out_.attributes[a].values.end(), first,
+                                             first + static_cast<std::ptrdiff_t>(width));
+        }
+        copied_.emplace(key, made);
+        return made;
+    }
+
+    std::uint32_t interpolate(std::uint32_t t, const Vec3& p) {
+        const std::uint32_t* tri = &in_.indices[3 * std::size_t{t}];
+        const Vec3& a = moved_[3 * std::size_t{t}];
+        const Vec3& b = moved_[3 * std::size_t{t} + 1];
+        const Vec3& c = moved_[3 * std::size_t{t} + 2];
+        const Vec3 normal = (b - a).cross(c - a);
+        std::array<double, 3> w = {(b - p).cross(c - p).dot(normal),
+                                   (c - p).cross(a - p).dot(normal),
+                                   (a - p).cross(b - p).dot(normal)};
+        double sum = 0.0;
+        for (double& x : w) sum += (x = std::max(x, 0.0));
+        if (!(sum > 0.0)) w = {1.0, 0.0, 0.0};
+        else for (double& x : w) x /= sum;
+        const std::uint32_t made = append(p.cast<float>());
+        if (!in_.normals.empty()) {
+            Vec3f n = Vec3f::Zero();
+            for (int k = 0; k < 3; ++k) n += static_cast<float>(w[k]) * in_.normals[tri[k]];
+            const Vec3f face = normal.cast<float>();
+            out_.normals.push_back(n.norm() > 1e-6f ? n.normalized() : face.normalized());
+        }
+        if (!in_.tangents.empty()) {
+            Vec3f tangent = Vec3f::Zero();
+            for (int k = 0; k < 3; ++k) {
+                tangent += static_cast<float>(w[k]) * in_.tangents[tri[k]].head<3>();
+            }
+            if (!out_.normals.empty()) {
+                const Vec3f& n = out_.normals.back();
+                tangent -= n.dot(tangent) * n;
+                if (tangent.norm() < 1e-6f) tangent = n.unitOrthogonal();
+            }
+            tangent.normalize();
+            out_.tangents.emplace_back(tangent.x(), tangent.y(), tangent.z(),
+                                       in_.tangents[tri[0]].w());
+        }
+        if (!in_.uvs.empty()) {
+            Vec2f uv = Vec2f::Zero();
+            for (int k = 0; k < 3; ++k) uv += static_cast<float>(w[k]) * in_.uvs[tri[k]];
+            out_.uvs.push_back(uv);
+        }
+        for (std::size_t at = 0; at < in_.attributes.size(); ++at) {
+            const auto width = static_cast<std::size_t>(in_.attributes[at].components);
+            for (std::size_t i = 0; i < width; ++i) {
+                double value = 0.0;
+                for (int k = 0; k < 3; ++k) {
+                    value += w[k] * in_.attributes[at].values[width * tri[k] + i];
+                }
+                out_.attributes[at].values.push_back(static_cast<float>(value));
+            }
+        }
+        return made;
+    }
+
+    std::uint32_t append(const Vec3f& position) {
+        out_.positions.push_back(position);
+        return static_cast<std::uint32_t>(out_.positions.size() - 1);
+    }
+
+    const Mesh& in_;
+    const std::vector<Vec3>& moved_;  // per input corner: its moved position (floats)
+    Mesh& out_;
+    std::unordered_map<std::uint64_t, std::uint32_t> copied_;  // (input, refined vertex) → output
+    std::unordered_map<std::uint64_t, std::uint32_t> interpolated_;  // (vertex, triangle) → output
+};
+
+// Per corner (3 t + k): the vertex of the closed surfaces it belongs to. Corners are joined
+// across each edge with the twin corner of the neighbouring triangle (welded by position, each
+// directed edge once and its reverse once), so where surfaces only touch at a point (a
+// non-manifold vertex: two fans of triangles around one position) each fan gets its own
+// vertex. Numbered in order of first appearance; `count` receives how many.
+std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& weld,
+                                       const std::vector<std::uint32_t>& indices,
+                                       std::uint32_t* count) {
+    const std::size_t corners = indices.size();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> edges(corners);  // (a→b, corner of a)
+    for (std::size_t c = 0; c < corners; ++c) {
+        const std::size_t next = c - c % 3 + (c % 3 + 1) % 3;
+        edges[c] = {std::uint64_t{weld[indices[c]]} << 32 | weld[indices[next]],
+                    static_cast<std::uint32_t>(c)};
+    }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::uint32_t> parent(corners);
+    std::iota(parent.begin(), parent.end(), 0u);
+    for (const auto& [key, c] : edges) {
+        // The twin b→a starts at b: its corner is a's neighbour in the same fan as c's next.
+        const std::uint64_t reverse = key << 32 | key >> 32;
+        const auto twin = std::lower_bound(edges.begin(), edges.end(),
+                                           std::make_pair(reverse, std::uint32_t{0}));
+        const std::uint32_t other = twin->second;  // corner of b in the neighbour
+        const std::uint32_t otherNext = other - other % 3 + (other % 3 + 1) % 3;  // of a
+        const std::uint32_t next = c - c % 3 + (c % 3 + 1) % 3;                   // of b
+        parent[findRoot(parent, otherNext)] = findRoot(parent, c);
+        parent[findRoot(parent, other)] = findRoot(parent, next);
+    }
+    std::vector<std::uint32_t> vertex(corners);
+    std::vector<std::uint32_t> number(corners, kUnknown);
+    std::uint32_t next = 0;
+    for (std::size_t c = 0; c < corners; ++c) {
+        std::uint32_t& n = number[findRoot(parent, static_cast<std::uint32_t>(c))];
+        if (n == kUnknown) n = next++;
+        vertex[c] = n;
+    }
+    *count = next;
+    return vertex;
+}
+
+// Why an attempt failed: for the input (no use trying again) or in the geometry.
+enum class Outcome { done, badInput, retry };
+
+Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
+    report.failure = why;
+    return outcome;
+}
+
+// One attempt with the positions moved by up to `jitter` (fraction of the mesh's extent)
+// with hash salt `salt`.
+Outcome unionAttempt(Mesh& mesh, SolidUnionReport& report, double jitter, std::uint64_t salt) {
+    std::uint32_t distinct = 0;
+    const std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &distinct);
+    report.inputComponents = countComponents(weld, distinct, mesh.indices);
+    if (!closedManifold(weld, mesh.indices)) {
+        return failWith(report, "the input is not closed 2-manifold surfaces (welded by position)",
+                        Outcome::badInput);
+    }
+    std::uint32_t vertices = 0;
+    const std::vector<std::uint32_t> fan = fanVertices(weld, mesh.indices, &vertices);
+
+    // 1. Surface vertices, moved off exact coincidences (to floats: see the file comment).
+    const Aabb box = mesh.bounds();
+    const double step = jitter * box.extent().maxCoeff();
+    std::vector<Vec3> movedVertex(vertices);
+    std::vector<char> made(vertices, 0);
+    std::vector<Vec3> moved(mesh.indices.size());  // per corner
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t v = fan[c];
+        if (!made[v]) {
+            Vec3f p = mesh.positions[mesh.indices[c]];
+            for (unsigned axis = 0; axis < 3; ++axis) {
+                const double h = detail::hashUnit(salt + 3 * std::uint64_t{v} + axis);
+                p[axis] = static_cast<float>(p[axis] + h * step);
+            }
+            movedVertex[v] = p.cast<double>();
+            made[v] = 1;
+        }
+        moved[c] = movedVertex[v];
+    }
+    SurfaceMesh m;
+    const auto faces = static_cast<SurfaceMesh::size_type>(mesh.triangleCount());
+    m.reserve(vertices, 3 * faces / 2, faces);
+    for (const Vec3& p : movedVertex) m.add_vertex(Point(p.x(), p.y(), p.z()));
+    auto origin = m.add_property_map<FaceIndex, std::uint32_t>("f:origin", kUnknown).first;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const FaceIndex f = m.add_face(VertexIndex(fan[3 * t]), VertexIndex(fan[3 * t + 1]),
+                                       VertexIndex(fan[3 * t + 2]));
+        if (f == SurfaceMesh::null_face()) {
+            return failWith(report, "the input is not 2-manifold", Outcome::badInput);
+        }
+        origin[f] = static_cast<std::uint32_t>(t);
+    }
+
+    // 2. Cut the triangles along their intersections.
+    auto constrained = m.add_property_map<SurfaceMesh::Edge_index, bool>("e:cut", false).first;
+    OriginVisitor visitor;
+    visitor.origin = origin;
+    try {
+        PMP::experimental::autorefine(
+            m, CGAL::parameters::edge_is_constrained_map(constrained).visitor(visitor));
+    } catch (const std::exception&) {
+        return failWith(report, "the refinement met a degenerate intersection it does not handle",
+                        Outcome::retry);
+    }
+    for (FaceIndex f : m.faces()) {
+        if (origin[f] == kUnknown) {
+            return failWith(report, "a refined triangle lost its origin", Outcome::retry);
+        }
+    }
+
+    if (m.number_of_faces() == faces && m.number_of_vertices() == vertices) {
+        report.outputComponents = report.inputComponents;  // nothing intersects: keep the input
+        report.patches = report.keptPatches = report.outputComponents;
+        return Outcome::done;
+    }
+
+    // 3. Patches on the union's boundary.
+    auto patch = m.add_property_map<FaceIndex, std::size_t>("f:patch").first;
+    report.patches =
+        PMP::connected_components(m, patch, CGAL::parameters::edge_is_constrained_map(constrained));
+    const std::vector<char> keep = classifyPatches(m, patch, report.patches);
+    report.keptPatches = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1));
+
+    // 4. The kept pieces, by primitive.
+    std::vector<std::uint32_t> primitiveOf(mesh.triangleCount(), 0);
+    for (std::uint32_t p = 0; p < mesh.primitives.size(); ++p) {
+        const MeshPrimitive& prim = mesh.primitives[p];
+        for (std::uint32_t t = prim.firstIndex / 3; t < (prim.firstIndex + prim.indexCount) / 3;
+             ++t) {
+            primitiveOf[t] = p;
+        }
+    }
+    Mesh out;
+    out.name = mesh.name;
+    out.materials = mesh.materials;
+    CornerWriter writer(mesh, moved, out);
+    const std::size_t primitiveCount = std::max<std::size_t>(mesh.primitives.size(), 1);
+    std::vector<std::vector<std::uint32_t>> byPrimitive(primitiveCount);
+    for (FaceIndex f : m.faces()) {
+        if (!keep[patch[f]]) continue;
+        const std::uint32_t t = origin[f];
+        std::vector<std::uint32_t>& indices = byPrimitive[primitiveOf[t]];
+        for (VertexIndex v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+            indices.push_back(writer.corner(t, static_cast<std::uint32_t>(v.idx()), m.point(v)));
+        }
+    }
+    for (std::size_t p = 0; p < primitiveCount; ++p) {
+        const auto first = static_cast<std::uint32_t>(out.indices.size());
+        out.indices.insert(out.indices.end(), byPrimitive[p].begin(), byPrimitive[p].end());
+        if (mesh.primitives.empty() || byPrimitive[p].empty()) continue;
+        MeshPrimitive prim = mesh.primitives[p];
+        prim.firstIndex = first;
+        prim.indexCount = static_cast<std::uint32_t>(byPrimitive[p].size());
+        out.primitives.push_back(std::move(prim));
+    }
+    report.newVertices = writer.interpolatedCount();
+
+    // 5. Check, then replace.
+    std::uint32_t outDistinct = 0;
+    const std::vector<std::uint32_t> outWeld = weldByPosition(out.positions, &outDistinct);
+    dropCollapsedTriangles(outWeld, out);
+    if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
+    if (!closedManifold(outWeld, out.indices)) {
+        return failWith(report, "the union's surface is not closed 2-manifold after rounding",
+                        Outcome::retry);
+    }
+    report.outputComponents = countComponents(outWeld, outDistinct, out.indices);
+    mesh = std::move(out);
+    return Outcome::done;
+}
+
+}  // namespace
+
+bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
+    SolidUnionReport local;
+    SolidUnionReport& r = report != nullptr ? *report : local;
+    r = SolidUnionReport{};
+    if (mesh.indices.empty()) return false;
+    if (!mesh.joints.empty()) {
+        r.failure = "skinned meshes are not supported";
+        return false;
+    }
+    // Rounding the new positions to float can join a piece's corners with a neighbour's where
+    // the move left the surfaces nearly touching; another move usually clears it.
+    for (const double jitter : {1e-5, 3e-5, 1e-4}) {
+        ++r.attempts;
+        const Outcome outcome = unionAttempt(mesh, r, jitter, 0x51ED * r.attempts);
+        if (outcome == Outcome::done) {
+            r.applied = true;
+            r.failure.clear();
+            return true;
+        }
+        if (outcome == Outcome::badInput) return false;
+    }
+    return false;
+}
+
+}  // namespace ramus

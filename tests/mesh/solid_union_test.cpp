@@ -1,0 +1,76 @@
+// The solid union (src/mesh/solid_union.cpp) on welded trees whose surfaces pierce each other:
+// afterwards no triangle pair intersects, the surface is one closed oriented 2-manifold, and
+// the enclosed volume stays within 1 % (only overlaps counted twice are lost).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "ramus/lsystem.hpp"
+#include "ramus/solid_union.hpp"
+#include "ramus/turtle.hpp"
+#include "ramus/welded_mesher.hpp"
+#include "welded_checks.hpp"
+
+namespace ramus {
+namespace {
+
+BranchTree growExample(const std::string& name, int derivations) {
+    const LSystem system = loadLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/" + name + ".lsys");
+    DeriveOptions options;
+    options.derivations = derivations;
+    const ModuleString word = deriveLSystem(system, options);
+    return interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings)).tree;
+}
+
+// tree_3d_tropism at 4 derivations: 15 junction–tube intersections without the union
+// (docs/welded.md); abop_2_7a: branches crossing in the skeleton.
+TEST(SolidUnion, WeldedTreesThatPierceThemselvesBecomeOneCleanSurface) {
+    for (const auto& [name, derivations] :
+         {std::pair<std::string, int>{"tree_3d_tropism", 4}, {"abop_2_7a", -1}}) {
+        SCOPED_TRACE(name);
+        const BranchTree tree = growExample(name, derivations);
+        const Mesh plain = buildWeldedTreeMesh(tree);
+        ASSERT_GT(test::countSelfIntersections(plain, 1000), 0u);
+        WeldedMeshParams params;
+        params.solidUnion = true;
+        WeldReport report;
+        const Mesh mesh = buildWeldedTreeMesh(tree, params, &report);
+        EXPECT_TRUE(report.solidUnion.applied) << report.solidUnion.failure;
+        EXPECT_GT(report.solidUnion.newVertices, 0u);
+        EXPECT_EQ(report.solidUnion.outputComponents, 1u);
+        EXPECT_EQ(test::countSelfIntersections(mesh, 1000), 0u);
+        const test::Topology top = test::analyzeTopology(mesh);
+        EXPECT_TRUE(top.closedOriented);
+        EXPECT_EQ(top.components, 1u);
+        EXPECT_LT(test::worstNormalLength(mesh), 1e-4);
+        const double before = test::signedVolume(plain);
+        const double after = test::signedVolume(mesh);
+        // The overlaps counted twice go; the positions move by at most 1e-4 of the extent.
+        EXPECT_NEAR(after, before, 0.01 * before);
+        test::writeWeldedGlb(mesh, "union_" + name);
+    }
+}
+
+TEST(SolidUnion, ASurfaceWithoutIntersectionsIsLeftAsItIs) {
+    const Mesh plain = buildWeldedTreeMesh(growExample("monopodial", 4));
+    Mesh mesh = plain;
+    SolidUnionReport report;
+    EXPECT_TRUE(unionClosedSurfaces(mesh, &report));
+    EXPECT_EQ(mesh.positions, plain.positions);
+    EXPECT_EQ(mesh.indices, plain.indices);
+    EXPECT_EQ(report.newVertices, 0u);
+}
+
+TEST(SolidUnion, OpenInputIsRefusedAndLeftUnchanged) {
+    Mesh mesh = buildWeldedTreeMesh(growExample("monopodial", 3));
+    mesh.indices.resize(mesh.indices.size() - 3);  // a hole
+    const Mesh before = mesh;
+    SolidUnionReport report;
+    EXPECT_FALSE(unionClosedSurfaces(mesh, &report));
+    EXPECT_FALSE(report.failure.empty());
+    EXPECT_EQ(mesh.indices, before.indices);
+    EXPECT_EQ(mesh.positions, before.positions);
+}
+
+}  // namespace
+}  // namespace ramus
