@@ -17,14 +17,14 @@ namespace ramus {
 
 /// What unionClosedSurfaces did, for tests and --stats.
 struct SolidUnionReport {
-    bool applied = false;  ///< the mesh was replaced by the union's surface
-    std::string failure;   ///< why not, when !applied (the mesh is then unchanged)
+    bool applied = false;              ///< the mesh was replaced by the union's surface
+    std::string failure;               ///< why not, when !applied (the mesh is then unchanged)
     std::size_t inputComponents = 0;   ///< closed surfaces of the input (welded by position)
     std::size_t outputComponents = 0;  ///< closed surfaces of the result
-    std::size_t patches = 0;      ///< pieces of surface between the intersection curves
-    std::size_t keptPatches = 0;  ///< of those, the ones on the union's boundary
-    std::size_t newVertices = 0;  ///< positions on the intersection curves
-    std::size_t attempts = 0;     ///< tries with different moves (at most 3)
+    std::size_t patches = 0;           ///< pieces of surface between the intersection curves
+    std::size_t keptPatches = 0;       ///< of those, the ones on the union's boundary
+    std::size_t newVertices = 0;       ///< positions on the intersection curves
+    std::size_t attempts = 0;          ///< tries with different moves (at most 3)
 };
 
 /// Replaces the surfaces of `mesh` by the boundary of the union of the solids they bound.

@@ -189,8 +189,8 @@ Vector faceNormal(const SurfaceMesh& m, FaceIndex f) {
 int windingOutside(const SurfaceMesh& m, const FaceTree& tree, FaceIndex f, const Vector& d,
                    std::vector<FaceIndex>& hits) {
     const auto h = m.halfedge(f);
-    const Point centre = CGAL::centroid(m.point(m.source(h)), m.point(m.target(h)),
-                                        m.point(m.target(m.next(h))));
+    const Point centre =
+        CGAL::centroid(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
     hits.clear();
     tree.all_intersected_primitives(Kernel::Ray_3(centre, d), std::back_inserter(hits));
     int winding = 0;
@@ -273,8 +273,8 @@ private:
         if (!in_.uvs.empty()) out_.uvs.push_back(in_.uvs[v]);
         for (std::size_t a = 0; a < in_.attributes.size(); ++a) {
             const auto width = static_cast<std::size_t>(in_.attributes[a].components);
-            const auto first = in_.attributes[a].values.begin() +
-                               static_cast<std::ptrdiff_t>(width * v);
+            const auto first =
+                in_.attributes[a].values.begin() + static_cast<std::ptrdiff_t>(width * v);
             out_.attributes[a].values.insert(out_.attributes[a].values.end(), first,
                                              first + static_cast<std::ptrdiff_t>(width));
         }
@@ -293,8 +293,10 @@ private:
                                    (a - p).cross(b - p).dot(normal)};
         double sum = 0.0;
         for (double& x : w) sum += (x = std::max(x, 0.0));
-        if (!(sum > 0.0)) w = {1.0, 0.0, 0.0};
-        else for (double& x : w) x /= sum;
+        if (!(sum > 0.0))
+            w = {1.0, 0.0, 0.0};
+        else
+            for (double& x : w) x /= sum;
         const std::uint32_t made = append(p.cast<float>());
         if (!in_.normals.empty()) {
             Vec3f n = Vec3f::Zero();
@@ -367,8 +369,8 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& weld,
     for (const auto& [key, c] : edges) {
         // The twin b→a starts at b: its corner is a's neighbour in the same fan as c's next.
         const std::uint64_t reverse = key << 32 | key >> 32;
-        const auto twin = std::lower_bound(edges.begin(), edges.end(),
-                                           std::make_pair(reverse, std::uint32_t{0}));
+        const auto twin =
+            std::lower_bound(edges.begin(), edges.end(), std::make_pair(reverse, std::uint32_t{0}));
         const std::uint32_t other = twin->second;  // corner of b in the neighbour
         const std::uint32_t otherNext = other - other % 3 + (other % 3 + 1) % 3;  // of a
         const std::uint32_t next = c - c % 3 + (c % 3 + 1) % 3;                   // of b

@@ -1,12 +1,13 @@
 // The solid union (src/mesh/solid_union.cpp) on welded trees whose surfaces pierce each other:
 // afterwards no triangle pair intersects, the surface is one closed oriented 2-manifold, and
 // the enclosed volume stays within 1 % (only overlaps counted twice are lost).
+#include "ramus/solid_union.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "ramus/lsystem.hpp"
-#include "ramus/solid_union.hpp"
 #include "ramus/turtle.hpp"
 #include "ramus/welded_mesher.hpp"
 #include "welded_checks.hpp"
