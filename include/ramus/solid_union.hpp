@@ -31,7 +31,8 @@ struct SolidUnionReport {
 /// The input's triangles, welded by position, must form closed, consistently outward-wound
 /// 2-manifold surfaces (seam and cap vertices that repeat a position bit-exactly are welded, as
 /// the tube and welded meshers write them); they may overlap each other and themselves.
-/// Positions are first moved by at most 4 float steps (a fixed hash of the welded vertex) so
+/// Positions are first moved by at most 1e-5 of the mesh's extent (a fixed hash of the surface
+/// vertex; 3e-5 and 1e-4 on a second and third attempt when the result fails its check) so
 /// that no exact coincidences remain (coplanar faces of a flat plant, rings drawn twice).
 /// Triangles away from all intersections keep their corners (moved as above) and attributes;
 /// triangles cut by another are split along the intersection curves, and every corner of a
