@@ -7,8 +7,9 @@
 //
 // Steps:
 // 1. Weld the input by position and move each surface vertex by at most 1e-5 of the extent
-//    (fixed hash; larger on retries): exact coincidences — faces of a flat plant lying in one plane, a ring drawn twice,
-//    three sheets through one intersection edge — are cases the refinement rejects
+//    (fixed hash; larger on retries): exact coincidences — faces of a flat plant lying in one
+//    plane, a ring drawn twice, three sheets through one intersection edge — are cases the
+//    refinement rejects
 //    ("triple intersection"); after the move they are in general position, and the moved
 //    positions are floats, so untouched triangles keep exactly representable corners.
 // 2. Autorefine. A visitor carries each input triangle's index to the pieces it is cut into.
