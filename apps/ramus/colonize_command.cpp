@@ -121,6 +121,7 @@ void run(ColonizeOptions& o) {
 
     timer.restart();
     const TreeModel model = forestModel(result.trees, assets.mesh, assets.lods);
+    warnOfFailedUnions(model);
     timer.lap("mesh");
 
     TreeOutputs outputs = o.outputs;

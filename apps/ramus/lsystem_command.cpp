@@ -102,6 +102,7 @@ void run(LsystemOptions& o) {
     timer.lap("interpret");
 
     const TreeModel model = plantModel(shape, assets.mesh, assets.lods);
+    warnOfFailedUnions(model);
     timer.lap("mesh");
 
     writeTreeOutputs(o.outputs, shape.tree, model, o.mesh);

@@ -108,8 +108,23 @@ void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model,
         for (const TreeLod& lod : model.lods) lods.push_back(lod.mesh.triangleCount());
         counts["lod_triangles"] = lods;
     }
+    const TreeMeshReport& report = model.report;
+    if (report.unionsApplied + report.unionsFailed > 0) {
+        counts["unions_applied"] = report.unionsApplied;
+        counts["unions_failed"] = report.unionsFailed;
+    }
     addStageSeconds(counts, timer);
     std::printf("%s\n", counts.dump().c_str());
+}
+
+void warnOfFailedUnions(const TreeModel& model) {
+    const TreeMeshReport& report = model.report;
+    if (report.unionsFailed == 0) return;
+    std::fprintf(stderr,
+                 "warning: solid union not applied to %zu of %zu bark meshes, which stay welded "
+                 "but overlapping (first: %s)\n",
+                 report.unionsFailed, report.unionsFailed + report.unionsApplied,
+                 report.firstFailure.c_str());
 }
 
 namespace {
@@ -129,12 +144,12 @@ TreeModel modelOf(std::span<const TreeMeshInput> inputs, const TreeMeshParams& p
                   const std::vector<double>& lods) {
     TreeModel model;
     if (lods.empty()) {
-        model.mesh = buildTreeMesh(inputs, params);
-        return model;
+        model.mesh = buildTreeMesh(inputs, params, &model.report);
+    } else {
+        model.lods = buildTreeLods(inputs, params, lods, &model.report);
+        model.mesh = model.lods.front().mesh;
+        model.mesh.name = "tree";
     }
-    model.lods = buildTreeLods(inputs, params, lods);
-    model.mesh = model.lods.front().mesh;
-    model.mesh.name = "tree";
     return model;
 }
 
@@ -259,6 +274,9 @@ void addAssetOptions(CLI::App& command, AssetOptions& o) {
     command.add_flag("--weld", o.weld,
                      "mesh each tree as one closed surface (welded junctions, docs/welded.md) "
                      "instead of overlapping tubes");
+    command.add_flag("--union", o.solidUnion,
+                     "with --weld (implied): unite the welded pieces and self-crossing branches "
+                     "into one surface without self-intersections (docs/welded.md; slower)");
     command
         .add_option("--uv-aspect", o.uvAspect,
                     "bark texture height / width (default: the built-in texture's, 2)")
@@ -292,6 +310,7 @@ AssetSettings applyAssetOptions(const TubeMeshParams& tube, const AssetOptions& 
     }
     if (!o.lods.empty()) s.lods = parseLodRatios(o.lods);
     if (c.count("--weld")) s.mesh.weldJunctions = true;
+    if (c.count("--union")) s.mesh.weldJunctions = s.mesh.solidUnion = true;
     return finishAssets(std::move(s));
 }
 
@@ -304,7 +323,8 @@ AssetSettings configAssets(const ColonizeConfig& config) {
         s.uvAspectGiven = true;
     }
     if (m.hasTextures) s.textures = m.textures;
-    s.mesh.weldJunctions = m.hasWeld && m.weld;
+    s.mesh.weldJunctions = (m.hasWeld && m.weld) || (m.hasSolidUnion && m.solidUnion);
+    s.mesh.solidUnion = m.hasSolidUnion && m.solidUnion;
     s.lods = m.lods;
     s.mesh.leaves = config.hasLeaves;
     if (config.hasLeaves) s.mesh.leaf = config.leaves;

@@ -40,6 +40,7 @@ void checkIterationLimit(const ColonizeConfig& config, int limit, const std::str
 struct TreeModel {
     Mesh mesh;                  ///< full detail (LOD 0 when there are LODs); previews draw it
     std::vector<TreeLod> lods;  ///< empty without --lods
+    TreeMeshReport report;      ///< what the solid union did (--union)
     /// What -o writes: one node "tree" with the mesh, or a node "tree" with one child node
     /// "tree_LOD<i>" per level (extras: lod, ratio, triangles, target_triangles).
     Scene scene() const;
@@ -58,13 +59,13 @@ struct AssetOptions {
     std::string atlas;
     double uvAspect = 1.0;
     std::string lods;  ///< "1,0.4,0.15"
-    bool leaves = false, wind = false, noTextures = false, weld = false;
+    bool leaves = false, wind = false, noTextures = false, weld = false, solidUnion = false;
     CLI::App* command = nullptr;
 };
 
 /// Registers --leaves, --leaf-shape, --leaves-per-tip, --leaves-per-length, --leaf-zone,
 /// --leaf-size, --leaf-width, --phyllotaxis, --leaf-tilt, --leaf-seed, --leaf-atlas, --wind,
-/// --no-textures, --uv-aspect, --lods, --weld.
+/// --no-textures, --uv-aspect, --lods, --weld, --union.
 void addAssetOptions(CLI::App& command, AssetOptions& options);
 
 /// Asset settings before the flags: defaults, or what a colonization config says.
@@ -124,8 +125,11 @@ private:
 void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer);
 
 /// Prints --stats as one JSON line: `counts` (in their order), the mesh's "vertices",
-/// "triangles", "leaf_triangles" and, with LODs, "lod_triangles", then "<stage>_seconds" for
-/// every stage of `timer`.
+/// "triangles", "leaf_triangles", with LODs "lod_triangles", with --union "unions_applied" and
+/// "unions_failed", then "<stage>_seconds" for every stage of `timer`.
 void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model, const StageTimer& timer);
+
+/// A warning on stderr when the solid union left bark meshes as they were (and why).
+void warnOfFailedUnions(const TreeModel& model);
 
 }  // namespace ramus::cli

@@ -116,6 +116,7 @@ struct ColonizeConfig {
         bool hasLeafRadius = false, hasRadiusExponent = false, hasTrunkMultiplier = false;
         bool hasMinSegments = false, hasMaxSegments = false, hasCapTips = false;
         bool hasUvAspect = false, hasWind = false, hasTextures = false, hasWeld = false;
+        bool hasSolidUnion = false;
         double leafRadius = 0.0, radiusExponent = 2.0, trunkMultiplier = 1.0;
         int minSegments = 4, maxSegments = 16;
         bool capTips = true;
@@ -123,6 +124,7 @@ struct ColonizeConfig {
         bool wind = false;         ///< "wind": write the wind attributes
         bool textures = true;      ///< "textures": embed the procedural bark and leaf textures
         bool weld = false;         ///< "weld": welded junctions (one closed surface per tree)
+        bool solidUnion = false;   ///< "union": united welded bark (implies weld)
         std::vector<double> lods;  ///< "lods": triangle ratios of the levels; empty = no LODs
     } mesh;
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "ramus/branch_tree.hpp"
@@ -28,6 +29,11 @@ struct TreeMeshParams {
     /// Bark as one closed surface per tree (buildWeldedTreeMesh, docs/welded.md) instead of
     /// overlapping tubes. It writes no wind data: not together with tube.windAttributes.
     bool weldJunctions = false;
+    /// With weldJunctions: replace each tree's welded bark by the surface of the union of its
+    /// pieces (unionClosedSurfaces): one closed surface without self-intersections where the
+    /// welder leaves overlapping pieces. Seconds for 10⁵ triangles, so LODs are planned on the
+    /// welded counts and only the final levels are united.
+    bool solidUnion = false;
     bool leaves = false;  ///< generate leaves (buildLeafMesh) besides the polygons
     LeafParams leaf;      ///< generated leaves, and the atlas, seed and LOD keep of the polygons
     /// The `{ . }` polygons' material (their primitive is named after it): they have their own
@@ -35,10 +41,18 @@ struct TreeMeshParams {
     Material polygonMaterial{"leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f, 0.8f, true};
 };
 
+/// What the solid union did to the bark meshes (params.solidUnion), for --stats and warnings.
+struct TreeMeshReport {
+    std::size_t unionsApplied = 0;  ///< tree meshes replaced by their union's surface
+    std::size_t unionsFailed = 0;   ///< tree meshes left welded (overlapping), see firstFailure
+    std::string firstFailure;       ///< SolidUnionReport::failure of the first failed one
+};
+
 /// The full-detail mesh "tree" of all `trees`: tubes, polygons as leaves (buildLeafPolygons),
 /// generated leaves when params.leaves; then mergePrimitivesByMaterial, so a forest has one
 /// "bark" and one "leaves" primitive. Nothing drawn → empty mesh.
-Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& params);
+Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& params,
+                   TreeMeshReport* report = nullptr);
 
 /// One level of detail.
 struct TreeLod {
@@ -61,7 +75,8 @@ struct TreeLod {
 /// a few percent unless the trunk alone is above the target. Throws Error for ratios outside
 /// (0, 1] or an empty list.
 std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
-                                   const TreeMeshParams& params, std::span<const double> ratios);
+                                   const TreeMeshParams& params, std::span<const double> ratios,
+                                   TreeMeshReport* report = nullptr);
 
 /// Triangles of `mesh` in primitives called `name` (e.g. "bark", "leaves").
 std::size_t primitiveTriangles(const Mesh& mesh, std::string_view name);

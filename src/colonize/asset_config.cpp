@@ -61,6 +61,14 @@ void parseMeshAssetKeys(const ConfigReader& r, const Json& j, ColonizeConfig::Me
     if ((m.hasTextures = j.contains("textures")))
         m.textures = r.boolean(j["textures"], "mesh.textures");
     if ((m.hasWeld = j.contains("weld"))) m.weld = r.boolean(j["weld"], "mesh.weld");
+    if ((m.hasSolidUnion = j.contains("union"))) {
+        m.solidUnion = r.boolean(j["union"], "mesh.union");
+        if (m.solidUnion && m.hasWeld && !m.weld) {
+            r.fail("mesh.union",
+                   "unites the welded bark, so expected \"weld\": true or no "
+                   "\"weld\" key, got \"weld\": false");
+        }
+    }
     if (j.contains("lods")) {
         const Json& list = j["lods"];
         if (!list.is_array() || list.empty() || list.size() > 16) {

@@ -172,10 +172,11 @@ std::vector<Vec3> parseRoots(const ConfigReader& r, const Json& j) {
 
 void parseMesh(const ConfigReader& r, const Json& j, ColonizeConfig::MeshOverrides& m) {
     if (!j.is_object()) r.fail("mesh", "expected an object, got " + j.dump());
-    r.checkKeys(j, "mesh",
-                {"leaf_radius", "radius_exponent", "trunk_multiplier", "min_segments",
-                 "max_segments", "cap_tips", "uv_aspect", "wind", "textures", "weld", "lods"},
-                "");
+    r.checkKeys(
+        j, "mesh",
+        {"leaf_radius", "radius_exponent", "trunk_multiplier", "min_segments", "max_segments",
+         "cap_tips", "uv_aspect", "wind", "textures", "weld", "union", "lods"},
+        "");
     colonize_detail::parseMeshAssetKeys(r, j, m);
     const double kMax = ConfigReader::kMax;
     if ((m.hasLeafRadius = j.contains("leaf_radius"))) {

@@ -24,12 +24,14 @@ struct Detail {
     std::size_t prune = 0;  // entries of the prune order left out
     bool cards = false;
     double keep = 1.0;
+    bool solidUnion = false;  // unite each tree's welded bark (final meshes, not LOD trials)
 };
 
 class TreeMesher {
 public:
-    TreeMesher(std::span<const TreeMeshInput> trees, const TreeMeshParams& params)
-        : trees_(trees), params_(params) {
+    TreeMesher(std::span<const TreeMeshInput> trees, const TreeMeshParams& params,
+               TreeMeshReport* report)
+        : trees_(trees), params_(params), report_(report) {
         for (const TreeMeshInput& in : trees)
             radii_.push_back(computeEdgeRadii(*in.tree, params.tube));
     }
@@ -42,22 +44,32 @@ public:
         mesh.name = "tree";
         for (std::size_t t = 0; t < trees_.size(); ++t) {
             if (d.prune == 0) {
-                appendMesh(mesh, branches(*trees_[t].tree, tube));
+                appendMesh(mesh, branches(*trees_[t].tree, tube, d.solidUnion));
             } else {
                 TubeMeshParams widths = tube;
                 widths.radiusMode = RadiusMode::Widths;
-                appendMesh(mesh, branches(prunedTree(t, d.prune), widths));
+                appendMesh(mesh, branches(prunedTree(t, d.prune), widths, d.solidUnion));
             }
         }
         return mesh;
     }
 
-    // One tree's bark: tubes, or one welded surface.
-    Mesh branches(const BranchTree& tree, const TubeMeshParams& tube) const {
+    // One tree's bark: tubes, or one welded surface (united when `solidUnion`).
+    Mesh branches(const BranchTree& tree, const TubeMeshParams& tube, bool solidUnion) const {
         if (!params_.weldJunctions) return buildTubeMesh(tree, tube);
         WeldedMeshParams welded;
         welded.tube = tube;
-        return buildWeldedTreeMesh(tree, welded);
+        welded.solidUnion = solidUnion;
+        WeldReport weld;
+        Mesh mesh = buildWeldedTreeMesh(tree, welded, &weld);
+        if (solidUnion && report_ != nullptr) {
+            if (weld.solidUnion.applied) {
+                ++report_->unionsApplied;
+            } else if (!mesh.primitives.empty()) {
+                if (report_->unionsFailed++ == 0) report_->firstFailure = weld.solidUnion.failure;
+            }
+        }
+        return mesh;
     }
 
     Mesh leaves(const Detail& d) const {
@@ -126,6 +138,7 @@ private:
 
     std::span<const TreeMeshInput> trees_;
     const TreeMeshParams& params_;
+    TreeMeshReport* report_;
     std::vector<std::vector<double>> radii_;
     std::vector<std::pair<std::size_t, std::size_t>> order_;
 };
@@ -203,16 +216,19 @@ std::size_t primitiveTriangles(const Mesh& mesh, std::string_view name) {
     return total;
 }
 
-Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& params) {
+Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& params,
+                   TreeMeshReport* report) {
     if (params.leaves) validateLeafParams(params.leaf);
     Detail full;
     full.minSegments = params.tube.minSegments;
     full.maxSegments = std::max(params.tube.maxSegments, params.tube.minSegments);
-    return TreeMesher(trees, params).both(full);
+    full.solidUnion = params.solidUnion;
+    return TreeMesher(trees, params, report).both(full);
 }
 
 std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
-                                   const TreeMeshParams& params, std::span<const double> ratios) {
+                                   const TreeMeshParams& params, std::span<const double> ratios,
+                                   TreeMeshReport* report) {
     if (ratios.empty()) throw Error("LOD ratios: expected at least one ratio in (0, 1]");
     for (double r : ratios) {
         if (!(r > 0.0 && r <= 1.0)) {
@@ -220,7 +236,7 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
         }
     }
     if (params.leaves) validateLeafParams(params.leaf);
-    TreeMesher mesher(trees, params);
+    TreeMesher mesher(trees, params, report);
     Detail full;
     full.minSegments = std::clamp(params.tube.minSegments, 3, 4096);
     full.maxSegments = std::clamp(params.tube.maxSegments, full.minSegments, 4096);
@@ -249,6 +265,7 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
         TreeLod lod;
         lod.ratio = ratios[i];
         lod.targetTriangles = static_cast<std::size_t>(target);
+        d.solidUnion = params.solidUnion;
         lod.mesh = mesher.both(d);
         lod.mesh.name = "tree_LOD" + std::to_string(i);
         lod.minSegments = d.minSegments;

@@ -42,6 +42,46 @@ TEST(WeldCli, ColonizeWeldWritesAWeldedModel) {
     keepForValidation(glb, "weld_cli_fig3_2_ring.glb");
 }
 
+nlohmann::json stats(const std::string& args, const fs::path& dir) {
+    const CommandResult r = runRamus(args + " --stats", dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("solid union"), std::string::npos) << r.err;
+    return nlohmann::json::parse(r.out);
+}
+
+// tree_3d_tropism at 4 derivations has 15 junction–tube intersections when only welded.
+TEST(WeldCli, LsystemUnionUnitesTheWeldedBark) {
+    const fs::path dir = scratchDirectory("union_lsystem");
+    const std::string file = RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d_tropism.lsys";
+    const std::string glb = (dir / "united.glb").string();
+    const nlohmann::json welded = stats("lsystem " + file + " -n 4 --weld", dir);
+    EXPECT_FALSE(welded.contains("unions_applied"));
+    const nlohmann::json united = stats("lsystem " + file + " -n 4 --union -o " + glb, dir);
+    EXPECT_EQ(united["unions_applied"], 1);
+    EXPECT_EQ(united["unions_failed"], 0);
+    EXPECT_NE(united["triangles"], welded["triangles"]);
+    ASSERT_TRUE(fs::exists(glb));
+    keepForValidation(glb, "union_cli_tree_3d_tropism.glb");
+}
+
+TEST(WeldCli, ColonizeConfigUnionUnitesEveryTree) {
+    const fs::path dir = scratchDirectory("union_colonize");
+    nlohmann::json config =
+        nlohmann::json::parse(readFile(RAMUS_SOURCE_DIR "/examples/colonize/fig3_2_ring.json"));
+    config["mesh"]["union"] = true;
+    const fs::path file = dir / "ring.json";
+    writeFileAtomic(file.string(), config.dump());
+    const nlohmann::json united = stats("colonize " + file.string(), dir);
+    EXPECT_EQ(united["unions_applied"], united["trees"]);
+    EXPECT_EQ(united["unions_failed"], 0);
+
+    config["mesh"]["weld"] = false;  // contradicts the union
+    writeFileAtomic(file.string(), config.dump());
+    const CommandResult r = runRamus("colonize " + file.string(), dir);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find("mesh.union"), std::string::npos) << r.err;
+}
+
 // Every primitive has the three wind accessors, one element per vertex.
 void expectWindInGlb(const fs::path& glb) {
     const nlohmann::json doc = glbJson(readFile(glb.string()));

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ramus/lsystem.hpp"
+#include "ramus/tree_asset.hpp"
 #include "ramus/turtle.hpp"
 #include "ramus/welded_mesher.hpp"
 #include "welded_checks.hpp"
@@ -71,6 +72,37 @@ TEST(SolidUnion, OpenInputIsRefusedAndLeftUnchanged) {
     EXPECT_FALSE(report.failure.empty());
     EXPECT_EQ(mesh.indices, before.indices);
     EXPECT_EQ(mesh.positions, before.positions);
+}
+
+// The asset path (--union): every level of detail is one clean closed surface, and its triangle
+// count stays within the 10 % of the target although the levels are planned on the
+// welded counts.
+TEST(SolidUnion, TreeAssetLevelsAreEachUnited) {
+    const BranchTree tree = growExample("tree_3d_tropism", 4);
+    const TreeMeshInput input{&tree, {}, {}, {}};
+    TreeMeshParams params;
+    params.weldJunctions = true;
+    params.solidUnion = true;
+    const double ratios[] = {1.0, 0.4, 0.15};
+    TreeMeshReport report;
+    const std::vector<TreeLod> lods = buildTreeLods({&input, 1}, params, ratios, &report);
+    EXPECT_EQ(report.unionsApplied, 3u);
+    EXPECT_EQ(report.unionsFailed, 0u) << report.firstFailure;
+    ASSERT_EQ(lods.size(), 3u);
+    const double full = static_cast<double>(lods[0].mesh.triangleCount());
+    for (const TreeLod& lod : lods) {
+        SCOPED_TRACE(lod.ratio);
+        const test::Topology top = test::analyzeTopology(lod.mesh);
+        EXPECT_TRUE(top.closedOriented);
+        EXPECT_EQ(top.components, 1u);
+        EXPECT_EQ(test::countSelfIntersections(lod.mesh, 1000), 0u);
+        EXPECT_NEAR(static_cast<double>(lod.mesh.triangleCount()), lod.ratio * full,
+                    0.1 * lod.ratio * full);
+    }
+    TreeMeshReport single;
+    const Mesh mesh = buildTreeMesh({&input, 1}, params, &single);
+    EXPECT_EQ(single.unionsApplied, 1u);
+    EXPECT_EQ(mesh.indices, lods[0].mesh.indices);
 }
 
 }  // namespace
