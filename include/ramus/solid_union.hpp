@@ -25,6 +25,12 @@ struct SolidUnionReport {
     std::size_t keptPatches = 0;       ///< of those, the ones on the union's boundary
     std::size_t newVertices = 0;       ///< positions on the intersection curves
     std::size_t attempts = 0;          ///< tries with different moves (at most 3)
+    std::size_t cavitiesFilled = 0;    ///< enclosed pockets whose inner surface was removed
+    std::size_t enclosedPieces = 0;    ///< pieces inside such pockets, removed with them
+    /// Triangle pairs of the result that still cross (exact test on the float positions):
+    /// where surfaces graze each other, rounding the cut positions to float can make them
+    /// cross. The best of the attempts is kept.
+    std::size_t remainingIntersections = 0;
 };
 
 /// Replaces the surfaces of `mesh` by the boundary of the union of the solids they bound.

@@ -26,9 +26,11 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -38,6 +40,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -95,23 +98,33 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x) {
     return x;
 }
 
+// Per triangle: its component (welded by position), numbered from 0; `count` receives how many.
+std::vector<std::uint32_t> triangleComponents(const std::vector<std::uint32_t>& weld,
+                                              std::uint32_t distinct,
+                                              const std::vector<std::uint32_t>& indices,
+                                              std::uint32_t* count) {
+    std::vector<std::uint32_t> parent(distinct);
+    std::iota(parent.begin(), parent.end(), 0u);
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const std::uint32_t a = findRoot(parent, weld[indices[t]]);
+        for (int k = 1; k < 3; ++k) parent[findRoot(parent, weld[indices[t + k]])] = a;
+    }
+    std::vector<std::uint32_t> number(distinct, kUnknown);
+    std::vector<std::uint32_t> component(indices.size() / 3);
+    *count = 0;
+    for (std::size_t t = 0; t < component.size(); ++t) {
+        std::uint32_t& n = number[findRoot(parent, weld[indices[3 * t]])];
+        if (n == kUnknown) n = (*count)++;
+        component[t] = n;
+    }
+    return component;
+}
+
 // Connected components of the triangles over welded vertex ids.
 std::size_t countComponents(const std::vector<std::uint32_t>& weld, std::uint32_t distinct,
                             const std::vector<std::uint32_t>& indices) {
-    std::vector<std::uint32_t> parent(distinct);
-    std::iota(parent.begin(), parent.end(), 0u);
-    std::vector<char> used(distinct, 0);
-    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-        const std::uint32_t a = findRoot(parent, weld[indices[t]]);
-        used[a] = 1;
-        for (int k = 1; k < 3; ++k) {
-            const std::uint32_t b = findRoot(parent, weld[indices[t + k]]);
-            used[b] = 1;
-            parent[b] = a;
-        }
-    }
-    std::size_t count = 0;
-    for (std::uint32_t v = 0; v < distinct; ++v) count += used[v] && findRoot(parent, v) == v;
+    std::uint32_t count = 0;
+    triangleComponents(weld, distinct, indices, &count);
     return count;
 }
 
@@ -138,23 +151,19 @@ bool closedManifold(const std::vector<std::uint32_t>& weld,
     return true;
 }
 
-// Removes triangles with two corners at one position: pieces so thin that rounding the new
-// positions to float joined two of their corners (an edge collapse, which leaves the rest of
-// the surface closed). Primitive ranges shrink with them.
-void dropCollapsedTriangles(const std::vector<std::uint32_t>& weld, Mesh& mesh) {
+// Keeps the triangles with keep[t] (primitive ranges shrink with them, empty ones go) and
+// then only the vertices they use, in order.
+void keepTriangles(Mesh& mesh, const std::vector<char>& keep) {
     std::size_t kept = 0;
     std::size_t primitive = 0;
     std::uint32_t primitiveEnd = mesh.primitives.empty() ? 0 : mesh.primitives[0].indexCount;
     std::vector<std::uint32_t> keptPerPrimitive(mesh.primitives.size(), 0);
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        while (primitive + 1 < mesh.primitives.size() && t >= primitiveEnd) {
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        while (primitive + 1 < mesh.primitives.size() && 3 * t >= primitiveEnd) {
             primitiveEnd += mesh.primitives[++primitive].indexCount;
         }
-        const std::uint32_t a = weld[mesh.indices[t]];
-        const std::uint32_t b = weld[mesh.indices[t + 1]];
-        const std::uint32_t c = weld[mesh.indices[t + 2]];
-        if (a == b || b == c || c == a) continue;
-        std::copy_n(mesh.indices.begin() + static_cast<std::ptrdiff_t>(t), 3,
+        if (!keep[t]) continue;
+        std::copy_n(mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * t), 3,
                     mesh.indices.begin() + static_cast<std::ptrdiff_t>(kept));
         kept += 3;
         if (!mesh.primitives.empty()) keptPerPrimitive[primitive] += 3;
@@ -167,6 +176,134 @@ void dropCollapsedTriangles(const std::vector<std::uint32_t>& weld, Mesh& mesh) 
         first += keptPerPrimitive[p];
     }
     std::erase_if(mesh.primitives, [](const MeshPrimitive& p) { return p.indexCount == 0; });
+
+    std::vector<std::uint32_t> remap(mesh.positions.size(), kUnknown);
+    std::vector<std::uint32_t> used;
+    for (std::uint32_t& v : mesh.indices) {
+        if (remap[v] == kUnknown) {
+            remap[v] = static_cast<std::uint32_t>(used.size());
+            used.push_back(v);
+        }
+        v = remap[v];
+    }
+    auto gather = [&](auto& values) {
+        if (values.empty()) return;
+        std::remove_reference_t<decltype(values)> picked;
+        picked.reserve(used.size());
+        for (std::uint32_t v : used) picked.push_back(values[v]);
+        values = std::move(picked);
+    };
+    gather(mesh.positions);
+    gather(mesh.normals);
+    gather(mesh.tangents);
+    gather(mesh.uvs);
+    for (VertexAttribute& a : mesh.attributes) {
+        const auto width = static_cast<std::size_t>(a.components);
+        std::vector<float> picked;
+        picked.reserve(width * used.size());
+        for (std::uint32_t v : used) {
+            const auto from = a.values.begin() + static_cast<std::ptrdiff_t>(width * v);
+            picked.insert(picked.end(), from, from + static_cast<std::ptrdiff_t>(width));
+        }
+        a.values = std::move(picked);
+    }
+}
+
+// Per triangle: whether it is kept when pieces so thin that rounding the new positions to
+// float joined two of their corners are removed (an edge collapse, which leaves the rest of
+// the surface closed).
+std::vector<char> uncollapsedTriangles(const std::vector<std::uint32_t>& weld,
+                                       const std::vector<std::uint32_t>& indices) {
+    std::vector<char> keep(indices.size() / 3);
+    for (std::size_t t = 0; t < keep.size(); ++t) {
+        const std::uint32_t a = weld[indices[3 * t]], b = weld[indices[3 * t + 1]],
+                            c = weld[indices[3 * t + 2]];
+        keep[t] = a != b && b != c && c != a;
+    }
+    return keep;
+}
+
+// Per triangle: whether it lies on the outer surface of the solid. The union's boundary is the
+// outer surface of each solid piece, plus the inward-facing surface of every pocket that the
+// overlapping tubes enclose without covering it, plus any piece inside such a pocket. A pocket's
+// surface has negative volume (summed about its own first corner, so that tiny pockets far from
+// the origin keep their sign); a piece inside one has winding number ≥ 1 with respect to the
+// rest once the pockets are gone (three rays vote, as for the patches). Both are removed: the
+// pockets are filled, as hidden inner geometry is nothing an engine or a printer wants.
+std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_t>& weld,
+                                std::uint32_t distinct, SolidUnionReport& report) {
+    const std::vector<std::uint32_t>& indices = mesh.indices;
+    std::uint32_t count = 0;
+    const std::vector<std::uint32_t> component =
+        triangleComponents(weld, distinct, indices, &count);
+    const std::size_t triangles = component.size();
+    auto corner = [&](std::size_t t, int k) {
+        return mesh.positions[indices[3 * t + k]].cast<double>();
+    };
+    std::vector<double> volume(count, 0.0);
+    std::vector<std::size_t> firstTriangle(count, triangles);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t c = component[t];
+        if (firstTriangle[c] == triangles) firstTriangle[c] = t;
+        const Vec3 o = corner(firstTriangle[c], 0);
+        volume[c] += (corner(t, 0) - o).dot((corner(t, 1) - o).cross(corner(t, 2) - o)) / 6.0;
+    }
+    std::vector<char> keepComponent(count);
+    for (std::uint32_t c = 0; c < count; ++c) keepComponent[c] = volume[c] >= 0.0;
+    report.cavitiesFilled =
+        static_cast<std::size_t>(std::count(keepComponent.begin(), keepComponent.end(), 0));
+
+    if (std::count(keepComponent.begin(), keepComponent.end(), 1) > 1) {
+        using Triangle = Kernel::Triangle_3;
+        std::vector<Triangle> solid;
+        std::vector<std::uint32_t> solidComponent;
+        for (std::size_t t = 0; t < triangles; ++t) {
+            if (!keepComponent[component[t]]) continue;
+            const Vec3 a = corner(t, 0), b = corner(t, 1), c = corner(t, 2);
+            solid.emplace_back(Point(a.x(), a.y(), a.z()), Point(b.x(), b.y(), b.z()),
+                               Point(c.x(), c.y(), c.z()));
+            solidComponent.push_back(component[t]);
+        }
+        using Primitive =
+            CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+        CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree(solid.cbegin(), solid.cend());
+        std::vector<std::vector<Triangle>::const_iterator> hits;
+        std::vector<char> enclosed(count, 0);
+        for (std::uint32_t c = 0; c < count; ++c) {
+            if (!keepComponent[c]) continue;
+            const std::size_t t = firstTriangle[c];
+            const Vec3 centre = (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0;
+            int votes = 0;
+            for (std::uint64_t ray = 0; ray < 3; ++ray) {
+                const std::uint64_t seed = 0xC0FFEE + 3 * (3 * std::uint64_t{c} + ray);
+                const Vector d(detail::hashUnit(seed), detail::hashUnit(seed + 1),
+                               detail::hashUnit(seed + 2));
+                hits.clear();
+                tree.all_intersected_primitives(
+                    Kernel::Ray_3(Point(centre.x(), centre.y(), centre.z()), d),
+                    std::back_inserter(hits));
+                int winding = 0;
+                for (const auto& hit : hits) {
+                    if (solidComponent[static_cast<std::size_t>(hit - solid.cbegin())] == c)
+                        continue;
+                    const Vector n = CGAL::cross_product(hit->vertex(1) - hit->vertex(0),
+                                                         hit->vertex(2) - hit->vertex(0));
+                    winding += n * d > 0.0 ? 1 : -1;
+                }
+                votes += winding >= 1;
+            }
+            enclosed[c] = votes >= 2;
+        }
+        for (std::uint32_t c = 0; c < count; ++c) {
+            if (enclosed[c]) {
+                keepComponent[c] = 0;
+                ++report.enclosedPieces;
+            }
+        }
+    }
+    std::vector<char> keep(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) keep[t] = keepComponent[component[t]];
+    return keep;
 }
 
 // Carries the input triangle's index to the pieces the refinement cuts it into.
@@ -349,34 +486,100 @@ private:
     std::unordered_map<std::uint64_t, std::uint32_t> interpolated_;  // (vertex, triangle) → output
 };
 
-// Per corner (3 t + k): the vertex of the closed surfaces it belongs to. Corners are joined
-// across each edge with the twin corner of the neighbouring triangle (welded by position, each
-// directed edge once and its reverse once), so where surfaces only touch at a point (a
-// non-manifold vertex: two fans of triangles around one position) each fan gets its own
-// vertex. Numbered in order of first appearance; `count` receives how many.
-std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& weld,
-                                       const std::vector<std::uint32_t>& indices,
-                                       std::uint32_t* count) {
-    const std::size_t corners = indices.size();
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> edges(corners);  // (a→b, corner of a)
-    for (std::size_t c = 0; c < corners; ++c) {
-        const std::size_t next = c - c % 3 + (c % 3 + 1) % 3;
+// Directed edges a→b of the triangles over welded vertex ids, sorted: (a, b) and, to tell apart
+// copies of one edge, the input vertex indices of its corners; `corner` is the corner at a.
+struct DirectedEdge {
+    std::uint64_t welded;
+    std::uint64_t input;
+    std::uint32_t corner;
+    auto operator<=>(const DirectedEdge&) const = default;
+};
+
+std::uint32_t nextCorner(std::uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; }
+
+std::vector<DirectedEdge> directedEdges(const std::vector<std::uint32_t>& weld,
+                                        const std::vector<std::uint32_t>& indices) {
+    std::vector<DirectedEdge> edges(indices.size());
+    for (std::uint32_t c = 0; c < indices.size(); ++c) {
+        const std::uint32_t next = nextCorner(c);
         edges[c] = {std::uint64_t{weld[indices[c]]} << 32 | weld[indices[next]],
-                    static_cast<std::uint32_t>(c)};
+                    std::uint64_t{indices[c]} << 32 | indices[next], c};
     }
     std::sort(edges.begin(), edges.end());
+    return edges;
+}
+
+std::uint64_t reversed(std::uint64_t edge) { return edge << 32 | edge >> 32; }
+
+// Whether the triangles bound closed oriented surfaces: every welded edge is used as often in
+// one direction as in the other (once each way where the surfaces are 2-manifold; k times each
+// way where k surfaces share the edge, as two tips ending at one point from different
+// directions share their caps' spokes), and no triangle has two corners at one position.
+bool closedSurfaces(const std::vector<std::uint32_t>& weld,
+                    const std::vector<std::uint32_t>& indices,
+                    const std::vector<DirectedEdge>& edges) {
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const std::uint32_t a = weld[indices[t]], b = weld[indices[t + 1]],
+                            c = weld[indices[t + 2]];
+        if (a == b || b == c || c == a) return false;
+    }
+    auto count = [&](std::uint64_t key) {
+        auto it = std::lower_bound(edges.begin(), edges.end(), DirectedEdge{key, 0, 0});
+        std::ptrdiff_t n = 0;
+        for (; it != edges.end() && it->welded == key; ++it) ++n;
+        return n;
+    };
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
+        if (count(reversed(edges[i].welded)) != static_cast<std::ptrdiff_t>(j - i)) return false;
+        i = j;
+    }
+    return true;
+}
+
+// Per corner (3 t + k): the vertex of the closed surfaces it belongs to. Corners are joined
+// across each edge with the twin corner of the neighbouring triangle, so where surfaces only
+// touch at a point (a non-manifold vertex: two fans of triangles around one position) each fan
+// gets its own vertex. Where k surfaces share an edge, its uses a→b are paired with the uses
+// b→a of the same input vertices first (the triangles of one fan or cap share their vertices),
+// the rest in order, so the surfaces keep their own vertices there and the move pulls them
+// apart. Numbered in order of first appearance; `count` receives how many.
+std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices,
+                                       const std::vector<DirectedEdge>& edges,
+                                       std::uint32_t* count) {
+    const std::size_t corners = indices.size();
     std::vector<std::uint32_t> parent(corners);
     std::iota(parent.begin(), parent.end(), 0u);
-    for (const auto& [key, c] : edges) {
-        // The twin b→a starts at b: its corner is a's neighbour in the same fan as c's next.
-        const std::uint64_t reverse = key << 32 | key >> 32;
-        const auto twin =
-            std::lower_bound(edges.begin(), edges.end(), std::make_pair(reverse, std::uint32_t{0}));
-        const std::uint32_t other = twin->second;  // corner of b in the neighbour
-        const std::uint32_t otherNext = other - other % 3 + (other % 3 + 1) % 3;  // of a
-        const std::uint32_t next = c - c % 3 + (c % 3 + 1) % 3;                   // of b
-        parent[findRoot(parent, otherNext)] = findRoot(parent, c);
-        parent[findRoot(parent, other)] = findRoot(parent, next);
+    // The twin b→a of corner c's edge a→b starts at b: its corner is a's neighbour in the same
+    // fan as c's next.
+    auto join = [&](std::uint32_t c, std::uint32_t other) {
+        parent[findRoot(parent, nextCorner(other))] = findRoot(parent, c);
+        parent[findRoot(parent, other)] = findRoot(parent, nextCorner(c));
+    };
+    std::vector<char> paired(corners, 0);
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
+        const std::uint64_t reverse = reversed(edges[i].welded);
+        if (edges[i].welded < reverse) {  // each undirected edge once
+            const auto first =
+                std::lower_bound(edges.begin(), edges.end(), DirectedEdge{reverse, 0, 0});
+            const auto last = first + static_cast<std::ptrdiff_t>(j - i);
+            for (int pass = 0; pass < 2; ++pass) {  // same input vertices first, then any
+                for (std::size_t k = i; k < j; ++k) {
+                    if (paired[edges[k].corner]) continue;
+                    for (auto twin = first; twin != last; ++twin) {
+                        if (paired[twin->corner]) continue;
+                        if (pass == 0 && twin->input != reversed(edges[k].input)) continue;
+                        paired[edges[k].corner] = paired[twin->corner] = 1;
+                        join(edges[k].corner, twin->corner);
+                        break;
+                    }
+                }
+            }
+        }
+        i = j;
     }
     std::vector<std::uint32_t> vertex(corners);
     std::vector<std::uint32_t> number(corners, kUnknown);
@@ -404,12 +607,13 @@ Outcome unionAttempt(Mesh& mesh, SolidUnionReport& report, double jitter, std::u
     std::uint32_t distinct = 0;
     const std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &distinct);
     report.inputComponents = countComponents(weld, distinct, mesh.indices);
-    if (!closedManifold(weld, mesh.indices)) {
-        return failWith(report, "the input is not closed 2-manifold surfaces (welded by position)",
+    const std::vector<DirectedEdge> edges = directedEdges(weld, mesh.indices);
+    if (!closedSurfaces(weld, mesh.indices, edges)) {
+        return failWith(report, "the input is not closed oriented surfaces (welded by position)",
                         Outcome::badInput);
     }
     std::uint32_t vertices = 0;
-    const std::vector<std::uint32_t> fan = fanVertices(weld, mesh.indices, &vertices);
+    const std::vector<std::uint32_t> fan = fanVertices(mesh.indices, edges, &vertices);
 
     // 1. Surface vertices, moved off exact coincidences (to floats: see the file comment).
     const Aabb box = mesh.bounds();
@@ -510,16 +714,59 @@ Outcome unionAttempt(Mesh& mesh, SolidUnionReport& report, double jitter, std::u
 
     // 5. Check, then replace.
     std::uint32_t outDistinct = 0;
-    const std::vector<std::uint32_t> outWeld = weldByPosition(out.positions, &outDistinct);
-    dropCollapsedTriangles(outWeld, out);
+    std::vector<std::uint32_t> outWeld = weldByPosition(out.positions, &outDistinct);
+    keepTriangles(out, uncollapsedTriangles(outWeld, out.indices));
     if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
+    outWeld = weldByPosition(out.positions, &outDistinct);
     if (!closedManifold(outWeld, out.indices)) {
         return failWith(report, "the union's surface is not closed 2-manifold after rounding",
                         Outcome::retry);
     }
+    keepTriangles(out, outerSurfaces(out, outWeld, outDistinct, report));
+    if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
+    outWeld = weldByPosition(out.positions, &outDistinct);
     report.outputComponents = countComponents(outWeld, outDistinct, out.indices);
     mesh = std::move(out);
     return Outcome::done;
+}
+
+// Pairs of triangles of the closed surfaces `mesh` that intersect other than in shared corners
+// or edges (exact predicates on the float positions, welded by position): what rounding the
+// cut positions to float left where surfaces only graze each other.
+std::size_t remainingIntersections(const Mesh& mesh) {
+    std::uint32_t distinct = 0;
+    const std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &distinct);
+    const std::vector<DirectedEdge> edges = directedEdges(weld, mesh.indices);
+    std::uint32_t vertices = 0;
+    const std::vector<std::uint32_t> fan = fanVertices(mesh.indices, edges, &vertices);
+    SurfaceMesh m;
+    std::vector<Point> points(vertices);
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const Vec3f& p = mesh.positions[mesh.indices[c]];
+        points[fan[c]] = Point(p.x(), p.y(), p.z());
+    }
+    for (const Point& p : points) m.add_vertex(p);
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        m.add_face(VertexIndex(fan[3 * t]), VertexIndex(fan[3 * t + 1]),
+                   VertexIndex(fan[3 * t + 2]));
+    }
+    std::vector<std::pair<FaceIndex, FaceIndex>> pairs;
+    PMP::self_intersections(m, std::back_inserter(pairs));
+    // Triangles that meet at a position split into two fan vertices (surfaces touching at a
+    // point) are reported too; they do not cross.
+    auto shareAPosition = [&](FaceIndex f, FaceIndex g) {
+        const std::uint32_t* a = &mesh.indices[3 * std::size_t{f.idx()}];
+        const std::uint32_t* b = &mesh.indices[3 * std::size_t{g.idx()}];
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                if (weld[a[i]] == weld[b[j]]) return true;
+            }
+        }
+        return false;
+    };
+    return static_cast<std::size_t>(std::count_if(pairs.begin(), pairs.end(), [&](const auto& p) {
+        return !shareAPosition(p.first, p.second);
+    }));
 }
 
 }  // namespace
@@ -533,19 +780,32 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
         r.failure = "skinned meshes are not supported";
         return false;
     }
-    // Rounding the new positions to float can join a piece's corners with a neighbour's where
-    // the move left the surfaces nearly touching; another move usually clears it.
+    // Rounding the cut positions to float can join a piece's corners with a neighbour's, or
+    // make surfaces that graze each other cross, differently for every move: up to three moves
+    // are tried, and the first clean result or else the one with the fewest crossings is kept.
+    std::optional<Mesh> best;
+    SolidUnionReport bestReport;
     for (const double jitter : {1e-5, 3e-5, 1e-4}) {
         ++r.attempts;
-        const Outcome outcome = unionAttempt(mesh, r, jitter, 0x51ED * r.attempts);
-        if (outcome == Outcome::done) {
-            r.applied = true;
-            r.failure.clear();
-            return true;
-        }
+        Mesh trial = mesh;
+        const Outcome outcome = unionAttempt(trial, r, jitter, 0x51ED * r.attempts);
         if (outcome == Outcome::badInput) return false;
+        if (outcome != Outcome::done) continue;
+        r.remainingIntersections = remainingIntersections(trial);
+        if (!best || r.remainingIntersections < bestReport.remainingIntersections) {
+            best = std::move(trial);
+            bestReport = r;
+        }
+        if (r.remainingIntersections == 0) break;
     }
-    return false;
+    if (!best) return false;
+    const std::size_t attempts = r.attempts;
+    r = bestReport;
+    r.attempts = attempts;
+    r.applied = true;
+    r.failure.clear();
+    mesh = std::move(*best);
+    return true;
 }
 
 }  // namespace ramus

@@ -135,20 +135,38 @@ std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
     return ring.base + static_cast<std::uint32_t>(k);
 }
 
-// Conservative close: each arm's ring closed by a cone that reaches a quarter of the ring's
-// radius past the branch node, so the arms overlap around the node as tubes do (no gap
-// between them, and the solid union joins them into one surface); a flat cap where the node
-// is not in front of the ring. The absorbed rings' hull on its own.
+// Conservative close: each arm's tube runs on at its ring's radius a quarter of the radius past
+// the branch node and is closed there by a cone half the radius long, so the arms overlap
+// around the node as plain tubes do, by a margin far above the solid union's moves (with a
+// cone alone the arms met only in a needle around the node, and the union's moves pulled them
+// apart). Past the node rather than at it: rings of equal radius centred on one node share
+// the points where their planes cross, which would join the arms' surfaces there. A flat cap
+// where the node is not in front of the ring. The absorbed rings' hull on its own.
 void WeldBuilder::fallbackJunction() {
     for (const HullRing& h : hullRings_) {
         if (!h.hole) continue;
         const Vec3 capNormal = -h.ring.outward;
-        const Vec3 toNode = h.node - h.ring.center;
-        const double ahead = toNode.dot(capNormal);
-        const Vec3 centre = ahead > 0.05 * h.ring.radius
-                                ? Vec3(h.node + 0.25 * h.ring.radius * toNode.normalized())
-                                : h.ring.center;
-        emitCap(h.ring, capNormal, !h.start, centre);
+        const double ahead = (h.node - h.ring.center).dot(capNormal);
+        if (!(ahead > 0.05 * h.ring.radius)) {
+            emitCap(h.ring, capNormal, !h.start, h.ring.center);
+            continue;
+        }
+        // The ring past the node keeps the arm ring's frame; texture v runs on along the arm.
+        const Vec3 frameNormal = h.ring.e1.cross(h.ring.e2);
+        RingPlace place;
+        place.center = h.node + 0.25 * h.ring.radius * capNormal;
+        place.normal = frameNormal;
+        place.radius = h.ring.radius;
+        const float ringV = mesh_.uvs[h.ring.base].y();
+        const double dv = (ahead + 0.25 * h.ring.radius) * vScale_ / (2.0 * h.ring.radius);
+        const auto v = static_cast<float>(ringV + (h.start ? dv : -dv));
+        const RingRecord pastNode = emitRing(place, h.ring.e1, v, h.ring.n, h.ring.wind);
+        if (h.start) {
+            emitSides(pastNode.base, h.ring.base, h.ring.n);
+        } else {
+            emitSides(h.ring.base, pastNode.base, h.ring.n);
+        }
+        emitCap(pastNode, capNormal, !h.start, place.center + 0.5 * h.ring.radius * capNormal);
     }
     const bool anyAbsorbed = std::any_of(hullRings_.begin(), hullRings_.end(),
                                          [](const HullRing& h) { return !h.hole; });

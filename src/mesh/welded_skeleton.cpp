@@ -5,7 +5,10 @@
 #include "welded_skeleton.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 namespace ramus::detail {
 namespace {
@@ -27,12 +30,85 @@ int segmentsFor(const TubeMeshParams& params, double radius, double maxRadius) {
 // `+X` and `+F` along the same line; the copies agree to rounding, far below this.
 constexpr double kSiblingTolerance = 1e-3;
 
+// Drawn edges by the grid cell of their end node, to find an edge drawn again from another
+// node: ABOP 1.31a's lattice of unit steps at multiples of 22.5° sends later branches along
+// edges already drawn. Their tubes would coincide vertex for vertex with the first ones and
+// share edges with them (no longer 2-manifold), and they add nothing to the surface.
+class DrawnEdges {
+public:
+    DrawnEdges(const BranchTree& tree, const std::vector<NodeId>& rep, double tolerance)
+        : tree_(tree), rep_(rep), tolerance_(tolerance) {}
+
+    void add(NodeId node) { ends_.emplace(cellOf(tree_.node(node).position), node); }
+
+    // An edge drawn so far between (near) `from` and (near) `to`, either way round: its node
+    // at `to` and the node that holds its radius (the edge's end); kNoNode when there is none.
+    struct Copy {
+        NodeId atTo = kNoNode;
+        NodeId edge = kNoNode;
+    };
+    Copy between(const Vec3& from, const Vec3& to) const {
+        const NodeId forward = endingAt(to, from);
+        if (forward != kNoNode) return {forward, forward};
+        const NodeId backward = endingAt(from, to);
+        if (backward != kNoNode) return {rep_[tree_.node(backward).parent], backward};
+        return {};
+    }
+
+private:
+    using Cell = std::array<std::int64_t, 3>;
+
+    Cell cellOf(const Vec3& p) const {
+        return {static_cast<std::int64_t>(std::floor(p.x() / tolerance_)),
+                static_cast<std::int64_t>(std::floor(p.y() / tolerance_)),
+                static_cast<std::int64_t>(std::floor(p.z() / tolerance_))};
+    }
+
+    // A drawn edge ending within the tolerance of `end` whose start is within it of `start`.
+    NodeId endingAt(const Vec3& end, const Vec3& start) const {
+        const Cell c = cellOf(end);
+        const double tolerance2 = tolerance_ * tolerance_;
+        for (int dx = -1; dx <= 1; ++dx) {
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dz = -1; dz <= 1; ++dz) {
+                    const auto [first, last] = ends_.equal_range({c[0] + dx, c[1] + dy, c[2] + dz});
+                    for (auto it = first; it != last; ++it) {
+                        const BranchNode& node = tree_.node(it->second);
+                        const Vec3& parent = tree_.node(rep_[node.parent]).position;
+                        if ((node.position - end).squaredNorm() <= tolerance2 &&
+                            (parent - start).squaredNorm() <= tolerance2) {
+                            return it->second;
+                        }
+                    }
+                }
+            }
+        }
+        return kNoNode;
+    }
+
+    struct CellHash {
+        std::size_t operator()(const Cell& c) const {
+            std::uint64_t h = 0x9E3779B97F4A7C15ull;
+            for (std::int64_t v : c)
+                h = (h ^ static_cast<std::uint64_t>(v)) * 0xBF58476D1CE4E5B9ull;
+            return static_cast<std::size_t>(h ^ (h >> 31));
+        }
+    };
+
+    const BranchTree& tree_;
+    const std::vector<NodeId>& rep_;
+    double tolerance_;
+    std::unordered_multimap<Cell, NodeId, CellHash> ends_;
+};
+
 // Merges every node closer than the merge distance to its (merged) parent into it, and every
 // node that coincides with an earlier sibling (an edge drawn twice) into that sibling, which
 // keeps the thicker radius; the merged node's children then hang from its representative, so
-// an edge chain drawn twice merges node by node. Counts the drawn edges at every remaining
-// node and marks the key nodes. Siblings are compared pairwise: quadratic only in a node's
-// degree, as the ring placement at its junction is.
+// an edge chain drawn twice merges node by node. An edge that repeats one drawn earlier from
+// other nodes (DrawnEdges) is left out, as if hidden, and the earlier edge keeps the thicker
+// radius; its end node starts a new part when edges go on from it. Counts the drawn edges at
+// every remaining node and marks the key nodes. Siblings are compared pairwise: quadratic only in a
+// node's degree, as the ring placement at its junction is.
 void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<double>& radii,
                 std::vector<std::uint8_t>& incoming) {
     const std::size_t n = tree.size();
@@ -43,6 +119,7 @@ void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<double>& ra
     // Per node: its children so far after merging, as a list through nextChild.
     std::vector<NodeId> firstChild(n, kNoNode);
     std::vector<NodeId> nextChild(n, kNoNode);
+    DrawnEdges drawn(tree, s.rep, 4.0 * s.mergeDistance);
     s.rep[0] = 0;
     for (std::size_t i = 1; i < n; ++i) {
         const BranchNode& node = tree.nodes()[i];
@@ -71,6 +148,14 @@ void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<double>& ra
             kept = std::max(kept, radii[i]);
             continue;
         }
+        const DrawnEdges::Copy copy = drawn.between(origin, node.position);
+        if (copy.atTo != kNoNode) {
+            s.rep[i] = copy.atTo;
+            double& kept = radii[static_cast<std::size_t>(copy.edge)];
+            kept = std::max(kept, radii[i]);
+            continue;
+        }
+        drawn.add(static_cast<NodeId>(i));
         nextChild[i] = firstChild[static_cast<std::size_t>(p)];
         firstChild[static_cast<std::size_t>(p)] = static_cast<NodeId>(i);
         incoming[i] = 1;

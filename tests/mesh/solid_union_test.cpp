@@ -53,6 +53,87 @@ TEST(SolidUnion, WeldedTreesThatPierceThemselvesBecomeOneCleanSurface) {
     }
 }
 
+// Dense plants (docs/welded.md): hundreds of overlapping pieces — fallback junctions, limbs
+// whose rings pass each other, pockets enclosed between them — become one closed surface.
+TEST(SolidUnion, DenseWeldedPlantsBecomeOneSurface) {
+    for (const char* name : {"abop_1_24f", "abop_1_27"}) {
+        SCOPED_TRACE(name);
+        const BranchTree tree = growExample(name, -1);
+        const Mesh plain = buildWeldedTreeMesh(tree);
+        ASSERT_GT(test::analyzeTopology(plain).components, 40u);
+        WeldedMeshParams params;
+        params.solidUnion = true;
+        WeldReport report;
+        const Mesh mesh = buildWeldedTreeMesh(tree, params, &report);
+        const SolidUnionReport& u = report.solidUnion;
+        EXPECT_TRUE(u.applied) << u.failure;
+        EXPECT_GT(u.cavitiesFilled, 0u);
+        EXPECT_EQ(u.outputComponents, 1u);
+        EXPECT_EQ(u.remainingIntersections, 0u);
+        EXPECT_EQ(test::countSelfIntersections(mesh, 1000), 0u);
+        const test::Topology top = test::analyzeTopology(mesh);
+        EXPECT_TRUE(top.closedOriented);
+        EXPECT_EQ(top.components, 1u);
+        EXPECT_GT(test::signedVolume(mesh), 0.0);
+        test::writeWeldedGlb(mesh, std::string("union_") + name);
+    }
+}
+
+// An axis-aligned box [lo, hi] as 12 outward triangles (without shared corners between boxes).
+void appendBox(Mesh& mesh, const Vec3& lo, const Vec3& hi) {
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (int i = 0; i < 8; ++i) {
+        mesh.positions.emplace_back(static_cast<float>(i & 1 ? hi.x() : lo.x()),
+                                    static_cast<float>(i & 2 ? hi.y() : lo.y()),
+                                    static_cast<float>(i & 4 ? hi.z() : lo.z()));
+    }
+    // Corner i has bit 0 = x, bit 1 = y, bit 2 = z; each face counter-clockwise from outside.
+    const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        mesh.indices.insert(mesh.indices.end(), {base + q[0], base + q[1], base + q[2]});
+        mesh.indices.insert(mesh.indices.end(), {base + q[0], base + q[2], base + q[3]});
+    }
+}
+
+// Six slabs on the faces of the unit cube enclose a pocket, and a small box floats in it: the
+// union's outer surface is the cube [-t, 1 + t]³ alone (pocket filled, the box inside removed).
+TEST(SolidUnion, EnclosedPocketsAreFilled) {
+    const double t = 0.1;
+    Mesh mesh;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = 0; side < 2; ++side) {
+            Vec3 lo = Vec3::Constant(-t), hi = Vec3::Constant(1.0 + t);
+            (side == 0 ? hi : lo)[axis] = side == 0 ? 0.0 : 1.0;
+            appendBox(mesh, lo, hi);
+        }
+    }
+    appendBox(mesh, Vec3::Constant(0.4), Vec3::Constant(0.6));
+    SolidUnionReport report;
+    ASSERT_TRUE(unionClosedSurfaces(mesh, &report)) << report.failure;
+    EXPECT_EQ(report.inputComponents, 2u);  // the slabs share corner positions
+    EXPECT_EQ(report.cavitiesFilled, 1u);
+    EXPECT_EQ(report.enclosedPieces, 1u);
+    EXPECT_EQ(report.outputComponents, 1u);
+    const test::Topology top = test::analyzeTopology(mesh);
+    EXPECT_TRUE(top.closedOriented);
+    EXPECT_EQ(top.components, 1u);
+    const double side = 1.0 + 2.0 * t;
+    EXPECT_NEAR(test::signedVolume(mesh), side * side * side, 1e-3);
+}
+
+// Two boxes sharing one edge exactly (each welded edge used twice each way): accepted, the
+// edge's uses paired within each box.
+TEST(SolidUnion, SurfacesSharingAnEdgeAreAccepted) {
+    Mesh mesh;
+    appendBox(mesh, Vec3(0, 0, 0), Vec3(1, 1, 1));
+    appendBox(mesh, Vec3(1, 1, 0), Vec3(2, 2, 1));
+    SolidUnionReport report;
+    ASSERT_TRUE(unionClosedSurfaces(mesh, &report)) << report.failure;
+    EXPECT_TRUE(test::analyzeTopology(mesh).closedOriented);
+    EXPECT_NEAR(test::signedVolume(mesh), 2.0, 1e-3);
+}
+
 TEST(SolidUnion, ASurfaceWithoutIntersectionsIsLeftAsItIs) {
     const Mesh plain = buildWeldedTreeMesh(growExample("monopodial", 4));
     Mesh mesh = plain;

@@ -203,6 +203,23 @@ TEST(WeldedMesh, EdgesDrawnTwiceAreMerged) {
     expectWelded(chains, segments(6, 8), "chain_drawn_twice");
 }
 
+// ABOP 1.31a: a later branch runs along an edge drawn before from another node. The copy (either
+// way round) adds nothing; what grows from its end grows from the first edge's node there.
+TEST(WeldedMesh, EdgesDrawnAgainFromAnotherNodeAreMerged) {
+    for (const bool reversed : {false, true}) {
+        BranchTree tree;
+        const NodeId root = tree.addRoot(Vec3::Zero());
+        const NodeId a = tree.addChild(root, Vec3(0, 1, 0));
+        tree.addChild(tree.addChild(a, Vec3(0, 2, 0)), Vec3(0, 3, 0));
+        // A hidden move to one end of edge a→b, then that edge drawn again and a twig from it.
+        const NodeId jump = tree.addChild(root, Vec3(0, reversed ? 2 : 1, 0));
+        tree.node(jump).hidden = true;
+        const NodeId copy = tree.addChild(jump, Vec3(0, reversed ? 1 : 2, 0));
+        tree.addChild(copy, Vec3(0.6, reversed ? 1.5 : 2.5, 0));
+        expectWelded(tree, segments(6, 8), reversed ? "drawn_again_reversed" : "drawn_again");
+    }
+}
+
 TEST(WeldedMesh, RootWithTwoChildrenBendsThroughIt) {
     BranchTree tree;
     const NodeId root = tree.addRoot(Vec3::Zero());
