@@ -1,10 +1,12 @@
 // Welded mesher throughput (issue 9: ≥ 1 M triangles/s on one thread) on the synthetic trees of
 // mesh_bench.cpp at doubling sizes (16k … 1M edges), the tube mesher on the same trees for
 // comparison, and on the shipped L-system tree_3d at 5 … 8 derivations. Counters as
-// mesh_bench.cpp, plus the junction count.
+// mesh_bench.cpp, plus the junction count. BM_WeldedUnion: welding plus the solid union
+// (--union) on tree_3d and on the dense ABOP 1.24b, with the union's result counters.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <string>
 
 #include "bench_trees.hpp"
 #include "ramus/lsystem.hpp"
@@ -37,9 +39,10 @@ BENCHMARK_CAPTURE(BM_WeldedMesh, monopodial, ramus::bench::monopodialTree)
     ->Range(1 << 14, 1 << 20)
     ->Unit(benchmark::kMillisecond);
 
-BranchTree tree3d(std::int64_t derivations) {
-    const ramus::LSystem system =
-        ramus::loadLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys");
+// A shipped L-system example; derivations < 0: the file's own.
+BranchTree example(const char* name, std::int64_t derivations) {
+    const ramus::LSystem system = ramus::loadLSystem(std::string(RAMUS_SOURCE_DIR) +
+                                                     "/examples/lsystems/" + name + ".lsys");
     ramus::DeriveOptions options;
     options.derivations = static_cast<int>(derivations);
     const ramus::ModuleString word = ramus::deriveLSystem(system, options);
@@ -47,6 +50,35 @@ BranchTree tree3d(std::int64_t derivations) {
         .tree;
 }
 
+BranchTree tree3d(std::int64_t derivations) { return example("tree_3d", derivations); }
+
 BENCHMARK_CAPTURE(BM_WeldedMesh, tree_3d, tree3d)->DenseRange(5, 8)->Unit(benchmark::kMillisecond);
+
+// triangles/s counts the welded mesh's triangles (the union's input).
+void BM_WeldedUnion(benchmark::State& state, const char* name) {
+    const BranchTree tree = example(name, state.range(0));
+    const ramus::Mesh welded = ramus::buildWeldedTreeMesh(tree);
+    ramus::WeldedMeshParams params;
+    params.solidUnion = true;
+    ramus::Mesh mesh;
+    ramus::WeldReport report;
+    for (auto _ : state) {
+        mesh = ramus::buildWeldedTreeMesh(tree, params, &report);
+        benchmark::DoNotOptimize(mesh.positions.data());
+        benchmark::ClobberMemory();
+    }
+    ramus::bench::reportMesh(state, tree, welded);
+    const ramus::SolidUnionReport& u = report.solidUnion;
+    state.counters["applied"] = u.applied ? 1.0 : 0.0;
+    state.counters["pieces_in"] = static_cast<double>(u.inputComponents);
+    state.counters["pieces_out"] = static_cast<double>(u.outputComponents);
+    state.counters["crossings_left"] = static_cast<double>(u.remainingIntersections);
+    state.counters["attempts"] = static_cast<double>(u.attempts);
+}
+
+BENCHMARK_CAPTURE(BM_WeldedUnion, tree_3d, "tree_3d")
+    ->DenseRange(5, 8)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WeldedUnion, abop_1_24b, "abop_1_24b")->Arg(-1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
