@@ -41,8 +41,8 @@ BENCHMARK_CAPTURE(BM_WeldedMesh, monopodial, ramus::bench::monopodialTree)
 
 // A shipped L-system example; derivations < 0: the file's own.
 BranchTree example(const char* name, std::int64_t derivations) {
-    const ramus::LSystem system = ramus::loadLSystem(std::string(RAMUS_SOURCE_DIR) +
-                                                     "/examples/lsystems/" + name + ".lsys");
+    const ramus::LSystem system =
+        ramus::loadLSystem(std::string(RAMUS_SOURCE_DIR) + "/examples/lsystems/" + name + ".lsys");
     ramus::DeriveOptions options;
     options.derivations = static_cast<int>(derivations);
     const ramus::ModuleString word = ramus::deriveLSystem(system, options);

@@ -33,22 +33,26 @@ struct SolidUnionReport {
     std::size_t remainingIntersections = 0;
 };
 
-/// Replaces the surfaces of `mesh` by the boundary of the union of the solids they bound.
+/// Replaces the surfaces of `mesh` by the outer boundary of the union of the solids they bound.
 /// The input's triangles, welded by position, must form closed, consistently outward-wound
-/// 2-manifold surfaces (seam and cap vertices that repeat a position bit-exactly are welded, as
-/// the tube and welded meshers write them); they may overlap each other and themselves.
+/// surfaces: every edge used as often in one direction as in the other (seam and cap vertices
+/// that repeat a position bit-exactly are welded, as the tube and welded meshers write them;
+/// surfaces may share edges and vertices, and may overlap each other and themselves).
 /// Positions are first moved by at most 1e-5 of the mesh's extent (a fixed hash of the surface
-/// vertex; 3e-5 and 1e-4 on a second and third attempt when the result fails its check) so
-/// that no exact coincidences remain (coplanar faces of a flat plant, rings drawn twice).
-/// Triangles away from all intersections keep their corners (moved as above) and attributes;
-/// triangles cut by another are split along the intersection curves, and every corner of a
-/// piece interpolates normal, tangent, UV and custom attributes of the input triangle it came
-/// from (normals and tangents renormalized). Primitives are kept in order, each with the
-/// pieces of its own triangles. The result is checked before it replaces the mesh: every edge
-/// (welded by position) is used by exactly two triangles in opposite directions. On any
-/// failure (input not closed or not manifold, a degenerate configuration the refinement does
-/// not handle, a result that fails the check) the mesh is left as it was and the reason goes
-/// to report->failure. Deterministic. Returns report.applied.
+/// vertex) so that no exact coincidences remain (coplanar faces of a flat plant, rings drawn
+/// twice). Triangles away from all intersections keep their corners (moved as above) and
+/// attributes; triangles cut by another are split along the intersection curves, and every
+/// corner of a piece interpolates normal, tangent, UV and custom attributes of the input
+/// triangle it came from (normals and tangents renormalized). Pockets enclosed by the solid
+/// are filled (their surface and pieces inside them removed). Primitives are kept in order,
+/// each with the pieces of its own triangles. The result must use every edge (welded by
+/// position) exactly twice in opposite directions; rounding the cut positions to float can
+/// break that or make grazing surfaces cross, so up to three moves (1e-5, 3e-5, 1e-4) are
+/// tried and the first result without crossings, else the one with the fewest, is kept
+/// (report->remainingIntersections). On any failure (input not closed, a degenerate
+/// configuration the refinement does not handle, no result that passes the check) the mesh
+/// is left as it was and the reason goes to report->failure. Deterministic. Returns
+/// report.applied.
 bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr);
 
 }  // namespace ramus

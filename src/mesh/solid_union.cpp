@@ -6,12 +6,12 @@
 // corefinement.h: exact predicates, intersection curves inserted as constrained edges).
 //
 // Steps:
-// 1. Weld the input by position and move each surface vertex by at most 1e-5 of the extent
-//    (fixed hash; larger on retries): exact coincidences — faces of a flat plant lying in one
-//    plane, a ring drawn twice, three sheets through one intersection edge — are cases the
-//    refinement rejects
-//    ("triple intersection"); after the move they are in general position, and the moved
-//    positions are floats, so untouched triangles keep exactly representable corners.
+// 1. Weld the input by position (edges shared by several surfaces paired per surface) and move
+//    each surface vertex by at most 1e-5 of the extent (fixed hash; larger on retries): exact
+//    coincidences — faces of a flat plant lying in one plane, a ring drawn twice, three sheets
+//    through one intersection edge — are cases the refinement rejects ("triple
+//    intersection"); after the move they are in general position, and the moved positions are
+//    floats, so untouched triangles keep exactly representable corners.
 // 2. Autorefine. A visitor carries each input triangle's index to the pieces it is cut into.
 // 3. Patches: connected regions between intersection edges. The winding number of the whole
 //    input is constant on each side of a patch; one ray from the centre of the patch's largest
@@ -20,7 +20,11 @@
 //    so a ray through an edge (counted twice) cannot flip the decision.
 // 4. Kept pieces become output triangles; corners interpolate the attributes of the input
 //    triangle the piece came from (corners that are input corners copy them exactly).
-// 5. Check before replacing: every edge welded by position is used once in each direction.
+// 5. Check: every edge welded by position is used once in each direction. Pockets (closed
+//    components of negative volume) are filled, with any piece inside one.
+// 6. Rounding to float can break the check or make grazing surfaces cross: up to three moves
+//    are tried, and the first result without crossings (CGAL's exact self-intersection test on
+//    the floats), else the one with the fewest, replaces the mesh.
 #include "ramus/solid_union.hpp"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>

@@ -183,7 +183,8 @@ TEST(SolidUnion, TreeAssetLevelsAreEachUnited) {
     TreeMeshReport single;
     const Mesh mesh = buildTreeMesh({&input, 1}, params, &single);
     EXPECT_EQ(single.unionsApplied, 1u);
-    EXPECT_EQ(mesh.indices, lods[0].mesh.indices);
+    EXPECT_EQ(mesh.indices, lods[0].mesh.indices);  // deterministic
+    EXPECT_EQ(mesh.positions, lods[0].mesh.positions);
 }
 
 }  // namespace
