@@ -64,19 +64,25 @@ TEST(WeldCli, LsystemUnionUnitesTheWeldedBark) {
     keepForValidation(glb, "union_cli_tree_3d_tropism.glb");
 }
 
-TEST(WeldCli, ColonizeConfigUnionUnitesEveryTree) {
-    const fs::path dir = scratchDirectory("union_colonize");
+// examples/colonize/fig3_2_ring.json with `meshKeys` added to its "mesh" object, written to
+// dir/ring.json.
+fs::path ringConfigWith(const fs::path& dir, const nlohmann::json& meshKeys) {
     nlohmann::json config =
         nlohmann::json::parse(readFile(RAMUS_SOURCE_DIR "/examples/colonize/fig3_2_ring.json"));
-    config["mesh"]["union"] = true;
+    config["mesh"].update(meshKeys);
     const fs::path file = dir / "ring.json";
     writeFileAtomic(file.string(), config.dump());
+    return file;
+}
+
+TEST(WeldCli, ColonizeConfigUnionUnitesEveryTree) {
+    const fs::path dir = scratchDirectory("union_colonize");
+    const fs::path file = ringConfigWith(dir, {{"union", true}});
     const nlohmann::json united = stats("colonize " + file.string(), dir);
     EXPECT_EQ(united["unions_applied"], united["trees"]);
     EXPECT_EQ(united["unions_failed"], 0);
 
-    config["mesh"]["weld"] = false;  // contradicts the union
-    writeFileAtomic(file.string(), config.dump());
+    ringConfigWith(dir, {{"union", true}, {"weld", false}});  // contradicts the union
     const CommandResult r = runRamus("colonize " + file.string(), dir);
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.err.find("mesh.union"), std::string::npos) << r.err;
@@ -110,12 +116,7 @@ TEST(WeldCli, LsystemWeldWithWindWritesWindAttributes) {
 
 TEST(WeldCli, ColonizeConfigWithWeldAndWindWritesWindAttributes) {
     const fs::path dir = scratchDirectory("weld_wind_colonize");
-    nlohmann::json config =
-        nlohmann::json::parse(readFile(RAMUS_SOURCE_DIR "/examples/colonize/fig3_2_ring.json"));
-    config["mesh"]["weld"] = true;
-    config["mesh"]["wind"] = true;
-    const fs::path file = dir / "ring.json";
-    writeFileAtomic(file.string(), config.dump());
+    const fs::path file = ringConfigWith(dir, {{"weld", true}, {"wind", true}});
     const fs::path glb = dir / "welded_wind.glb";
     const CommandResult r = runRamus("colonize " + file.string() + " -o " + glb.string(), dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
