@@ -58,10 +58,15 @@ public:
 private:
     using Cell = std::array<std::int64_t, 3>;
 
+    // Clamped so that no position (nor a non-finite one) overflows the integer cast.
     Cell cellOf(const Vec3& p) const {
-        return {static_cast<std::int64_t>(std::floor(p.x() / tolerance_)),
-                static_cast<std::int64_t>(std::floor(p.y() / tolerance_)),
-                static_cast<std::int64_t>(std::floor(p.z() / tolerance_))};
+        Cell c;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double x = std::floor(p[axis] / tolerance_);
+            c[static_cast<std::size_t>(axis)] =
+                x >= -1e15 && x <= 1e15 ? static_cast<std::int64_t>(x) : 0;
+        }
+        return c;
     }
 
     // A drawn edge ending within the tolerance of `end` whose start is within it of `start`.
@@ -105,10 +110,10 @@ private:
 // node that coincides with an earlier sibling (an edge drawn twice) into that sibling, which
 // keeps the thicker radius; the merged node's children then hang from its representative, so
 // an edge chain drawn twice merges node by node. An edge that repeats one drawn earlier from
-// other nodes (DrawnEdges) is left out, as if hidden, and the earlier edge keeps the thicker
-// radius; its end node starts a new part when edges go on from it. Counts the drawn edges at
-// every remaining node and marks the key nodes. Siblings are compared pairwise: quadratic only in a
-// node's degree, as the ring placement at its junction is.
+// other nodes, either way round (DrawnEdges), is merged the same way: its end node into the
+// earlier edge's node there, and the earlier edge keeps the thicker radius. Counts the drawn edges
+// at every remaining node and marks the key nodes. Siblings are compared pairwise: quadratic only
+// in a node's degree, as the ring placement at its junction is.
 void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<double>& radii,
                 std::vector<std::uint8_t>& incoming) {
     const std::size_t n = tree.size();
