@@ -86,6 +86,10 @@ const VertexAttribute* findAttribute(const Mesh& mesh, std::string_view name);
 /// both meshes must refer to the same Skin.
 void appendMesh(Mesh& mesh, const Mesh& other);
 
+/// Removes the vertices no triangle uses, keeping the others in order; every vertex array
+/// (normals, tangents, UVs, joints, weights, custom attributes) is compacted with them.
+void removeUnusedVertices(Mesh& mesh);
+
 /// Merges primitives that draw with the same material (sameMaterial) into one, in the order of
 /// their first appearance, reordering the index buffer accordingly; duplicate materials are
 /// removed. Triangles and vertices are unchanged, so e.g. several trees appended into one mesh

@@ -103,6 +103,44 @@ void appendMesh(Mesh& mesh, const Mesh& other) {
     mesh.primitives = std::move(primitives);
 }
 
+void removeUnusedVertices(Mesh& mesh) {
+    std::vector<std::uint32_t> remap(mesh.positions.size(), 0);
+    for (std::uint32_t i : mesh.indices) remap[i] = 1;
+    std::uint32_t kept = 0;
+    auto move = [&](auto& values, std::size_t from, std::size_t to) {
+        if (!values.empty()) values[to] = values[from];
+    };
+    for (std::size_t i = 0; i < remap.size(); ++i) {
+        if (remap[i] == 0) continue;
+        remap[i] = kept;
+        move(mesh.positions, i, kept);
+        move(mesh.normals, i, kept);
+        move(mesh.tangents, i, kept);
+        move(mesh.uvs, i, kept);
+        move(mesh.joints, i, kept);
+        move(mesh.weights, i, kept);
+        for (VertexAttribute& a : mesh.attributes) {
+            const auto width = static_cast<std::size_t>(a.components);
+            std::copy_n(a.values.begin() + static_cast<std::ptrdiff_t>(width * i), width,
+                        a.values.begin() + static_cast<std::ptrdiff_t>(width * kept));
+        }
+        ++kept;
+    }
+    for (std::uint32_t& i : mesh.indices) i = remap[i];
+    auto shrink = [&](auto& values) {
+        if (!values.empty()) values.resize(kept);
+    };
+    shrink(mesh.positions);
+    shrink(mesh.normals);
+    shrink(mesh.tangents);
+    shrink(mesh.uvs);
+    shrink(mesh.joints);
+    shrink(mesh.weights);
+    for (VertexAttribute& a : mesh.attributes) {
+        a.values.resize(static_cast<std::size_t>(a.components) * kept);
+    }
+}
+
 void mergePrimitivesByMaterial(Mesh& mesh) {
     if (mesh.primitives.empty()) return;
     // Distinct materials in first-use order; each primitive's group.

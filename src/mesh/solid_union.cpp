@@ -156,7 +156,7 @@ bool closedManifold(const std::vector<std::uint32_t>& weld,
 }
 
 // Keeps the triangles with keep[t] (primitive ranges shrink with them, empty ones go) and
-// then only the vertices they use, in order.
+// then only the vertices they use.
 void keepTriangles(Mesh& mesh, const std::vector<char>& keep) {
     std::size_t kept = 0;
     std::size_t primitive = 0;
@@ -181,36 +181,7 @@ void keepTriangles(Mesh& mesh, const std::vector<char>& keep) {
     }
     std::erase_if(mesh.primitives, [](const MeshPrimitive& p) { return p.indexCount == 0; });
 
-    std::vector<std::uint32_t> remap(mesh.positions.size(), kUnknown);
-    std::vector<std::uint32_t> used;
-    for (std::uint32_t& v : mesh.indices) {
-        if (remap[v] == kUnknown) {
-            remap[v] = static_cast<std::uint32_t>(used.size());
-            used.push_back(v);
-        }
-        v = remap[v];
-    }
-    auto gather = [&](auto& values) {
-        if (values.empty()) return;
-        std::remove_reference_t<decltype(values)> picked;
-        picked.reserve(used.size());
-        for (std::uint32_t v : used) picked.push_back(values[v]);
-        values = std::move(picked);
-    };
-    gather(mesh.positions);
-    gather(mesh.normals);
-    gather(mesh.tangents);
-    gather(mesh.uvs);
-    for (VertexAttribute& a : mesh.attributes) {
-        const auto width = static_cast<std::size_t>(a.components);
-        std::vector<float> picked;
-        picked.reserve(width * used.size());
-        for (std::uint32_t v : used) {
-            const auto from = a.values.begin() + static_cast<std::ptrdiff_t>(width * v);
-            picked.insert(picked.end(), from, from + static_cast<std::ptrdiff_t>(width));
-        }
-        a.values = std::move(picked);
-    }
+    removeUnusedVertices(mesh);
 }
 
 // Per triangle: whether it is kept when pieces so thin that rounding the new positions to

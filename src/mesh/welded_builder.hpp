@@ -47,7 +47,6 @@ private:
                         const WindSample& wind);
     void emitSides(std::uint32_t a, std::uint32_t b, int n);
     void emitCap(const RingRecord& ring, const Vec3& normal, bool tip, const Vec3& centre);
-    void dropUnusedVertices();
 
     // welded_junction_mesh.cpp
     void meshJunction(NodeId cluster);

@@ -265,36 +265,6 @@ void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip,
     }
 }
 
-// Removes vertices no triangle uses (rings of absorbed limbs inside a hull), keeping order;
-// custom attributes (wind data) are compacted with them.
-void WeldBuilder::dropUnusedVertices() {
-    std::vector<std::uint32_t> remap(mesh_.positions.size(), 0);
-    for (std::uint32_t i : mesh_.indices) remap[i] = 1;
-    std::uint32_t kept = 0;
-    for (std::size_t i = 0; i < remap.size(); ++i) {
-        if (remap[i] == 0) continue;
-        remap[i] = kept;
-        mesh_.positions[kept] = mesh_.positions[i];
-        mesh_.normals[kept] = mesh_.normals[i];
-        mesh_.tangents[kept] = mesh_.tangents[i];
-        mesh_.uvs[kept] = mesh_.uvs[i];
-        for (VertexAttribute& a : mesh_.attributes) {
-            const auto width = static_cast<std::size_t>(a.components);
-            std::copy_n(a.values.begin() + static_cast<std::ptrdiff_t>(width * i), width,
-                        a.values.begin() + static_cast<std::ptrdiff_t>(width * kept));
-        }
-        ++kept;
-    }
-    for (std::uint32_t& i : mesh_.indices) i = remap[i];
-    mesh_.positions.resize(kept);
-    mesh_.normals.resize(kept);
-    mesh_.tangents.resize(kept);
-    mesh_.uvs.resize(kept);
-    for (VertexAttribute& a : mesh_.attributes) {
-        a.values.resize(static_cast<std::size_t>(a.components) * kept);
-    }
-}
-
 Mesh WeldBuilder::build(WeldReport* report) {
     mesh_.name = "tree";
     const WeldSkeleton& s = skeleton_;
@@ -333,7 +303,8 @@ Mesh WeldBuilder::build(WeldReport* report) {
         RAMUS_ASSERT(windOut_.vertexCount() == mesh_.positions.size());
         windOut_.moveInto(mesh_);
     }
-    if (junctions_.absorbedLimbs + junctions_.merges > 0) dropUnusedVertices();
+    // Rings of absorbed limbs inside a hull are used by no triangle.
+    if (junctions_.absorbedLimbs + junctions_.merges > 0) removeUnusedVertices(mesh_);
     if (!mesh_.indices.empty()) {
         mesh_.materials.push_back(params_.tube.material);
         mesh_.primitives.push_back(

@@ -1,4 +1,5 @@
 // appendMesh: re-basing of indices, primitives and materials; attribute arrays.
+// removeUnusedVertices: compaction of every vertex array.
 #include "ramus/mesh.hpp"
 
 #include <gtest/gtest.h>
@@ -80,6 +81,25 @@ TEST(AppendMesh, AppendingAnEmptyMeshChangesNothing) {
     // Custom attributes too (bark with wind data, then a tree without leaves).
     ASSERT_EQ(a.attributes.size(), 1u);
     EXPECT_EQ(a.attributes[0].values.size(), 12u);
+}
+
+TEST(RemoveUnusedVertices, KeepsUsedVerticesInOrderWithAllTheirArrays) {
+    Mesh mesh = triangle(0.0f, true);
+    appendMesh(mesh, triangle(5.0f, true));
+    mesh.uvs[4] = Vec2f(0.25f, 0.75f);
+    mesh.attributes.push_back({"_X", 2, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}});
+    mesh.indices = {4, 1, 5};  // vertices 0, 2 and 3 unused
+    removeUnusedVertices(mesh);
+    ASSERT_EQ(mesh.vertexCount(), 3u);
+    EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{1, 0, 2}));
+    EXPECT_EQ(mesh.positions[0], Vec3f(1, 0, 0));
+    EXPECT_EQ(mesh.positions[1], Vec3f(6, 0, 0));
+    EXPECT_EQ(mesh.positions[2], Vec3f(5, 1, 0));
+    EXPECT_EQ(mesh.uvs[1], Vec2f(0.25f, 0.75f));
+    EXPECT_EQ(mesh.normals.size(), 3u);
+    EXPECT_EQ(mesh.tangents.size(), 3u);
+    EXPECT_TRUE(mesh.joints.empty());
+    EXPECT_EQ(mesh.attributes[0].values, (std::vector<float>{2, 3, 8, 9, 10, 11}));
 }
 
 }  // namespace
