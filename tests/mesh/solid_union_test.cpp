@@ -122,6 +122,25 @@ TEST(SolidUnion, EnclosedPocketsAreFilled) {
     EXPECT_NEAR(test::signedVolume(mesh), side * side * side, 1e-3);
 }
 
+// Separate pieces far below the largest one's volume are slivers the cut leaves and go; a small
+// real piece stays.
+TEST(SolidUnion, SliversAreRemovedAndSmallPiecesKept) {
+    Mesh mesh;
+    appendBox(mesh, Vec3(0, 0, 0), Vec3(1, 1, 1));
+    appendBox(mesh, Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5));  // union volume 2 − 1/8
+    appendBox(mesh, Vec3(3, 0, 0), Vec3(3.001, 0.001, 0.001));  // 1e-9: 5e-10 of it
+    appendBox(mesh, Vec3(0, 3, 0), Vec3(0.02, 3.02, 0.02));     // 8e-6: 4e-6 of it
+    SolidUnionReport report;
+    ASSERT_TRUE(unionClosedSurfaces(mesh, &report)) << report.failure;
+    EXPECT_EQ(report.inputComponents, 4u);
+    EXPECT_EQ(report.sliversRemoved, 1u);
+    EXPECT_EQ(report.outputComponents, 2u);
+    EXPECT_TRUE(test::analyzeTopology(mesh).closedOriented);
+    EXPECT_NEAR(test::signedVolume(mesh), 1.875 + 8e-6, 1e-4);
+    EXPECT_GT(mesh.bounds().max.y(), 3.0);
+    EXPECT_LT(mesh.bounds().max.x(), 2.0);
+}
+
 // Two boxes sharing one edge exactly (each welded edge used twice each way): accepted, the
 // edge's uses paired within each box.
 TEST(SolidUnion, SurfacesSharingAnEdgeAreAccepted) {
