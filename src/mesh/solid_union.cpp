@@ -584,6 +584,25 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
 }
 
 // Why an attempt failed: for the input (no use trying again) or in the geometry.
+// The closed surfaces of a mesh: vertices welded by position, and per corner the vertex of
+// its surface (fanVertices).
+struct Surfaces {
+    std::vector<std::uint32_t> weld;  ///< per mesh vertex: its position's id
+    std::uint32_t positions = 0;      ///< distinct positions
+    bool closed = false;              ///< closedSurfaces holds; fan is filled only then
+    std::vector<std::uint32_t> fan;   ///< per corner: its surface vertex
+    std::uint32_t vertices = 0;       ///< surface vertices
+};
+
+Surfaces surfacesOf(const Mesh& mesh) {
+    Surfaces s;
+    s.weld = weldByPosition(mesh.positions, &s.positions);
+    const std::vector<DirectedEdge> edges = directedEdges(s.weld, mesh.indices);
+    s.closed = closedSurfaces(s.weld, mesh.indices, edges);
+    if (s.closed) s.fan = fanVertices(mesh.indices, edges, &s.vertices);
+    return s;
+}
+
 enum class Outcome { done, badInput, retry };
 
 Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
@@ -591,19 +610,12 @@ Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
     return outcome;
 }
 
-// One attempt with the positions moved by up to `jitter` (fraction of the mesh's extent)
-// with hash salt `salt`.
-Outcome unionAttempt(Mesh& mesh, SolidUnionReport& report, double jitter, std::uint64_t salt) {
-    std::uint32_t distinct = 0;
-    const std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &distinct);
-    report.inputComponents = countComponents(weld, distinct, mesh.indices);
-    const std::vector<DirectedEdge> edges = directedEdges(weld, mesh.indices);
-    if (!closedSurfaces(weld, mesh.indices, edges)) {
-        return failWith(report, "the input is not closed oriented surfaces (welded by position)",
-                        Outcome::badInput);
-    }
-    std::uint32_t vertices = 0;
-    const std::vector<std::uint32_t> fan = fanVertices(mesh.indices, edges, &vertices);
+// One attempt on the closed surfaces `input` of `mesh` with the positions moved by up to
+// `jitter` (fraction of the mesh's extent) with hash salt `salt`.
+Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report, double jitter,
+                     std::uint64_t salt) {
+    const std::vector<std::uint32_t>& fan = input.fan;
+    const std::uint32_t vertices = input.vertices;
 
     // 1. Surface vertices, moved off exact coincidences (to floats: see the file comment).
     const Aabb box = mesh.bounds();
@@ -724,13 +736,11 @@ Outcome unionAttempt(Mesh& mesh, SolidUnionReport& report, double jitter, std::u
 // or edges (exact predicates on the float positions, welded by position): what rounding the
 // cut positions to float left where surfaces only graze each other.
 std::size_t remainingIntersections(const Mesh& mesh) {
-    std::uint32_t distinct = 0;
-    const std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &distinct);
-    const std::vector<DirectedEdge> edges = directedEdges(weld, mesh.indices);
-    std::uint32_t vertices = 0;
-    const std::vector<std::uint32_t> fan = fanVertices(mesh.indices, edges, &vertices);
+    const Surfaces surfaces = surfacesOf(mesh);  // closed: the result passed closedManifold
+    const std::vector<std::uint32_t>& weld = surfaces.weld;
+    const std::vector<std::uint32_t>& fan = surfaces.fan;
     SurfaceMesh m;
-    std::vector<Point> points(vertices);
+    std::vector<Point> points(surfaces.vertices);
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         const Vec3f& p = mesh.positions[mesh.indices[c]];
         points[fan[c]] = Point(p.x(), p.y(), p.z());
@@ -773,20 +783,29 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
     // Rounding the cut positions to float can join a piece's corners with a neighbour's, or
     // make surfaces that graze each other cross, differently for every move: up to three moves
     // are tried, and the first clean result or else the one with the fewest crossings is kept.
+    const Surfaces input = surfacesOf(mesh);
+    r.inputComponents = countComponents(input.weld, input.positions, mesh.indices);
+    if (!input.closed) {
+        r.failure = "the input is not closed oriented surfaces (welded by position)";
+        return false;
+    }
     std::optional<Mesh> best;
     SolidUnionReport bestReport;
     for (const double jitter : {1e-5, 3e-5, 1e-4}) {
         ++r.attempts;
+        SolidUnionReport attempt;  // each attempt counts its own patches, pockets and slivers
+        attempt.inputComponents = r.inputComponents;
         Mesh trial = mesh;
-        const Outcome outcome = unionAttempt(trial, r, jitter, 0x51ED * r.attempts);
+        const Outcome outcome = unionAttempt(trial, input, attempt, jitter, 0x51ED * r.attempts);
+        r.failure = attempt.failure;
         if (outcome == Outcome::badInput) return false;
         if (outcome != Outcome::done) continue;
-        r.remainingIntersections = remainingIntersections(trial);
-        if (!best || r.remainingIntersections < bestReport.remainingIntersections) {
+        attempt.remainingIntersections = remainingIntersections(trial);
+        if (!best || attempt.remainingIntersections < bestReport.remainingIntersections) {
             best = std::move(trial);
-            bestReport = r;
+            bestReport = attempt;
         }
-        if (r.remainingIntersections == 0) break;
+        if (attempt.remainingIntersections == 0) break;
     }
     if (!best) return false;
     const std::size_t attempts = r.attempts;
