@@ -91,7 +91,8 @@ std::string newOutputPrefix() {
 }
 
 /// Skeleton i of the stream, from its PCA sample to its GLB file `prefix<i>.glb`.
-void writeSkeletonGlb(std::uint64_t i, ramus::BoneResolution resolution, const std::string& prefix) {
+void writeSkeletonGlb(std::uint64_t i, ramus::BoneResolution resolution,
+                      const std::string& prefix) {
     const ramus::SkeletonDesign design = designFor(i);
     const ramus::Skeleton s = ramus::buildSkeleton(design);
     ramus::writeGlb(ramus::skeletonSceneAt(s, resolution, design.headKind),
@@ -129,7 +130,9 @@ void BM_SkeletonBatch1000GlbFiles(benchmark::State& state) {
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(first));
 }
-BENCHMARK(BM_SkeletonBatch1000GlbFiles)->Iterations(1)->UseRealTime()
+BENCHMARK(BM_SkeletonBatch1000GlbFiles)
+    ->Iterations(1)
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -112,6 +112,8 @@ void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model,
     if (report.unionsApplied + report.unionsFailed > 0) {
         counts["unions_applied"] = report.unionsApplied;
         counts["unions_failed"] = report.unionsFailed;
+        counts["union_crossings_left"] = report.crossingsLeft;
+        counts["union_pinched_edges"] = report.pinchedEdges;
     }
     addStageSeconds(counts, timer);
     std::printf("%s\n", counts.dump().c_str());

@@ -34,6 +34,10 @@ struct SolidUnionReport {
     /// where surfaces graze each other, rounding the cut positions to float can make them
     /// cross. The best of the attempts is kept.
     std::size_t remainingIntersections = 0;
+    /// Edges of the result (welded by position) where k > 1 sheets meet, each sheet using the
+    /// edge once each way: sheets the cut left closer than float resolution, pinched together
+    /// by rounding. Each sheet stays closed and oriented; its vertices there are its own.
+    std::size_t pinchedEdges = 0;
 };
 
 /// Replaces the surfaces of `mesh` by the outer boundary of the union of the solids they bound.
@@ -50,12 +54,13 @@ struct SolidUnionReport {
 /// are filled (their surface and pieces inside them removed), and separate slivers with less
 /// than 1e-7 of the largest piece's volume are removed. Primitives are kept in order,
 /// each with the pieces of its own triangles. The result must use every edge (welded by
-/// position) exactly twice in opposite directions; rounding the cut positions to float can
-/// break that or make grazing surfaces cross, so up to three moves (1e-5, 3e-5, 1e-4) are
-/// tried and the first result without crossings, else the one with the fewest, is kept
-/// (report->remainingIntersections). On any failure (input not closed, a degenerate
-/// configuration the refinement does not handle, no result that passes the check) the mesh
-/// is left as it was and the reason goes to report->failure. Deterministic. Returns
+/// position) as often in one direction as in the other; rounding the cut positions to float
+/// can break that, pinch sheets together along an edge or make grazing surfaces cross, so up
+/// to three moves (1e-5, 3e-5, 1e-4) are tried and the first result without crossings and
+/// pinched edges, else the one with the fewest of both, is kept
+/// (report->remainingIntersections, report->pinchedEdges). On any failure (input not closed, a
+/// degenerate configuration the refinement does not handle, no result that passes the check) the
+/// mesh is left as it was and the reason goes to report->failure. Deterministic. Returns
 /// report.applied.
 bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr);
 

@@ -46,6 +46,8 @@ struct TreeMeshReport {
     std::size_t unionsApplied = 0;  ///< tree meshes replaced by their union's surface
     std::size_t unionsFailed = 0;   ///< tree meshes left welded (overlapping), see firstFailure
     std::string firstFailure;       ///< SolidUnionReport::failure of the first failed one
+    /// Over the united meshes: SolidUnionReport::remainingIntersections and ::pinchedEdges.
+    std::size_t crossingsLeft = 0, pinchedEdges = 0;
 };
 
 /// The full-detail mesh "tree" of all `trees`: tubes, polygons as leaves (buildLeafPolygons),

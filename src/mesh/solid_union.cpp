@@ -20,11 +20,12 @@
 //    so a ray through an edge (counted twice) cannot flip the decision.
 // 4. Kept pieces become output triangles; corners interpolate the attributes of the input
 //    triangle the piece came from (corners that are input corners copy them exactly).
-// 5. Check: every edge welded by position is used once in each direction. Pockets (closed
-//    components of negative volume) are filled, with any piece inside one.
+// 5. Check: every edge welded by position is used as often in one direction as in the other
+//    (once each way, or k times where rounding pinched k sheets together along it: counted).
+//    Pockets (closed components of negative volume) are filled, with any piece inside one.
 // 6. Rounding to float can break the check or make grazing surfaces cross: up to three moves
 //    are tried, and the first result without crossings (CGAL's exact self-intersection test on
-//    the floats), else the one with the fewest, replaces the mesh.
+//    the floats) or pinched edges, else the one with the fewest of both, replaces the mesh.
 #include "ramus/solid_union.hpp"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -130,29 +131,6 @@ std::size_t countComponents(const std::vector<std::uint32_t>& weld, std::uint32_
     std::uint32_t count = 0;
     triangleComponents(weld, distinct, indices, &count);
     return count;
-}
-
-// Whether every edge (welded) is used exactly once in each direction and no triangle has two
-// corners at one position.
-bool closedManifold(const std::vector<std::uint32_t>& weld,
-                    const std::vector<std::uint32_t>& indices) {
-    std::vector<std::uint64_t> directed;
-    directed.reserve(indices.size());
-    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = weld[indices[t + k]];
-            const std::uint32_t b = weld[indices[t + (k + 1) % 3]];
-            if (a == b) return false;
-            directed.push_back(std::uint64_t{a} << 32 | b);
-        }
-    }
-    std::sort(directed.begin(), directed.end());
-    for (std::size_t i = 0; i < directed.size(); ++i) {
-        if (i > 0 && directed[i] == directed[i - 1]) return false;  // used twice one way
-        const std::uint64_t reverse = directed[i] << 32 | directed[i] >> 32;
-        if (!std::binary_search(directed.begin(), directed.end(), reverse)) return false;
-    }
-    return true;
 }
 
 // Keeps the triangles with keep[t] (primitive ranges shrink with them, empty ones go) and
@@ -528,6 +506,19 @@ bool closedSurfaces(const std::vector<std::uint32_t>& weld,
     return true;
 }
 
+// Edges of closed surfaces (closedSurfaces holds) used more than once in each direction: where
+// k > 1 sheets meet along one edge.
+std::size_t pinchedEdges(const std::vector<DirectedEdge>& edges) {
+    std::size_t pinched = 0;
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
+        if (j - i > 1 && edges[i].welded < reversed(edges[i].welded)) ++pinched;
+        i = j;
+    }
+    return pinched;
+}
+
 // Per corner (3 t + k): the vertex of the closed surfaces it belongs to. Corners are joined
 // across each edge with the twin corner of the neighbouring triangle, so where surfaces only
 // touch at a point (a non-manifold vertex: two fans of triangles around one position) each fan
@@ -592,6 +583,7 @@ struct Surfaces {
     bool closed = false;              ///< closedSurfaces holds; fan is filled only then
     std::vector<std::uint32_t> fan;   ///< per corner: its surface vertex
     std::uint32_t vertices = 0;       ///< surface vertices
+    std::size_t pinchedEdges = 0;     ///< edges where several sheets meet (when closed)
 };
 
 Surfaces surfacesOf(const Mesh& mesh) {
@@ -599,7 +591,10 @@ Surfaces surfacesOf(const Mesh& mesh) {
     s.weld = weldByPosition(mesh.positions, &s.positions);
     const std::vector<DirectedEdge> edges = directedEdges(s.weld, mesh.indices);
     s.closed = closedSurfaces(s.weld, mesh.indices, edges);
-    if (s.closed) s.fan = fanVertices(mesh.indices, edges, &s.vertices);
+    if (s.closed) {
+        s.fan = fanVertices(mesh.indices, edges, &s.vertices);
+        s.pinchedEdges = pinchedEdges(edges);
+    }
     return s;
 }
 
@@ -720,9 +715,9 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     keepTriangles(out, uncollapsedTriangles(outWeld, out.indices));
     if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
     outWeld = weldByPosition(out.positions, &outDistinct);
-    if (!closedManifold(outWeld, out.indices)) {
-        return failWith(report, "the union's surface is not closed 2-manifold after rounding",
-                        Outcome::retry);
+    const std::vector<DirectedEdge> outEdges = directedEdges(outWeld, out.indices);
+    if (!closedSurfaces(outWeld, out.indices, outEdges)) {
+        return failWith(report, "the union's surface is not closed after rounding", Outcome::retry);
     }
     keepTriangles(out, outerSurfaces(out, outWeld, outDistinct, report));
     if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
@@ -735,8 +730,8 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
 // Pairs of triangles of the closed surfaces `mesh` that intersect other than in shared corners
 // or edges (exact predicates on the float positions, welded by position): what rounding the
 // cut positions to float left where surfaces only graze each other.
-std::size_t remainingIntersections(const Mesh& mesh) {
-    const Surfaces surfaces = surfacesOf(mesh);  // closed: the result passed closedManifold
+// `surfaces`: surfacesOf(mesh), closed (the result passed closedSurfaces).
+std::size_t remainingIntersections(const Mesh& mesh, const Surfaces& surfaces) {
     const std::vector<std::uint32_t>& weld = surfaces.weld;
     const std::vector<std::uint32_t>& fan = surfaces.fan;
     SurfaceMesh m;
@@ -767,6 +762,11 @@ std::size_t remainingIntersections(const Mesh& mesh) {
     return static_cast<std::size_t>(std::count_if(pairs.begin(), pairs.end(), [&](const auto& p) {
         return !shareAPosition(p.first, p.second);
     }));
+}
+
+// What makes a result less than one clean 2-manifold: crossing triangle pairs and pinched edges.
+std::size_t defects(const SolidUnionReport& report) {
+    return report.remainingIntersections + report.pinchedEdges;
 }
 
 }  // namespace
@@ -800,12 +800,14 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
         r.failure = attempt.failure;
         if (outcome == Outcome::badInput) return false;
         if (outcome != Outcome::done) continue;
-        attempt.remainingIntersections = remainingIntersections(trial);
-        if (!best || attempt.remainingIntersections < bestReport.remainingIntersections) {
+        const Surfaces result = surfacesOf(trial);
+        attempt.pinchedEdges = result.pinchedEdges;
+        attempt.remainingIntersections = remainingIntersections(trial, result);
+        if (!best || defects(attempt) < defects(bestReport)) {
             best = std::move(trial);
             bestReport = attempt;
         }
-        if (attempt.remainingIntersections == 0) break;
+        if (defects(attempt) == 0) break;
     }
     if (!best) return false;
     const std::size_t attempts = r.attempts;

@@ -65,6 +65,8 @@ public:
         if (solidUnion && report_ != nullptr) {
             if (weld.solidUnion.applied) {
                 ++report_->unionsApplied;
+                report_->crossingsLeft += weld.solidUnion.remainingIntersections;
+                report_->pinchedEdges += weld.solidUnion.pinchedEdges;
             } else if (!mesh.primitives.empty()) {
                 if (report_->unionsFailed++ == 0) report_->firstFailure = weld.solidUnion.failure;
             }

@@ -42,6 +42,8 @@ private:
     void gatherLimbRings(std::int32_t limb);
     void meshLimb(std::int32_t limb);
     void meshAbsorbedLimb(std::int32_t limb);
+    void tubeAbsorbedLimb(std::int32_t limb);
+    double vAfterStep(std::uint32_t point, double v) const;
     WindSample windAt(const RingPlace& place) const;
     RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
                         const WindSample& wind);
@@ -78,6 +80,7 @@ private:
         bool hole;   // an arm's ring (its disc is cut out) or an absorbed ring (plain points)
         bool start;  // the ring starts its limb (else it ends it)
         Vec3 node;   // the branch node where the ring's limb meets the junction
+        std::int32_t limb;
     };
     std::vector<HullRing> hullRings_;
     std::vector<Vec3> points_;

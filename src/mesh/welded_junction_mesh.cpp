@@ -41,10 +41,10 @@ void WeldBuilder::gatherJunction(NodeId cluster) {
             const bool start = limb.startKey == m;
             const Vec3& node = s.pointPosition[start ? limb.first : limb.first + limb.count - 1];
             if (!junctions_.absorbed[li]) {
-                hullRings_.push_back({start ? startRing_[li] : endRing_[li], true, start, node});
+                hullRings_.push_back({start ? startRing_[li] : endRing_[li], true, start, node, l});
             } else if (start) {  // inside: listed once, from its start
                 for (std::uint32_t d = discFirst_[li]; d < discFirst_[li + 1]; ++d) {
-                    hullRings_.push_back({discs_[d], false, true, node});
+                    hullRings_.push_back({discs_[d], false, true, node, l});
                 }
             }
         };
@@ -141,7 +141,8 @@ std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
 // cone alone the arms met only in a needle around the node, and the union's moves pulled them
 // apart). Past the node rather than at it: rings of equal radius centred on one node share
 // the points where their planes cross, which would join the arms' surfaces there. A flat cap
-// where the node is not in front of the ring. The absorbed rings' hull on its own.
+// where the node is not in front of the ring. The absorbed rings' hull on its own, or where
+// that fails each absorbed limb as a tube of its own.
 void WeldBuilder::fallbackJunction() {
     for (const HullRing& h : hullRings_) {
         if (!h.hole) continue;
@@ -170,7 +171,17 @@ void WeldBuilder::fallbackJunction() {
     }
     const bool anyAbsorbed = std::any_of(hullRings_.begin(), hullRings_.end(),
                                          [](const HullRing& h) { return !h.hole; });
-    if (anyAbsorbed) hullJunction(false);  // appends nothing when it fails
+    if (!anyAbsorbed || hullJunction(false)) return;  // appends nothing when it fails
+    // Without that hull the absorbed limbs would leave a gap between the arms of their nodes
+    // and split the tree (ABOP 1.25: 103 absorbed rings whose incremental hull met a horizon
+    // that was not a simple cycle). An absorbed limb's rings are listed together.
+    std::int32_t last = -1;
+    for (const HullRing& h : hullRings_) {
+        if (h.hole || h.limb == last) continue;
+        tubeAbsorbedLimb(h.limb);
+        last = h.limb;
+        ++report_.absorbedTubes;
+    }
 }
 
 void WeldBuilder::meshJunction(NodeId cluster) {

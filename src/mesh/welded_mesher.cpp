@@ -184,10 +184,8 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
     // The parent branch's values at the limb's start (see the file comment).
     const WindSample wind = params_.tube.windAttributes ? wind_.at(limb.startKey) : WindSample{};
     for (std::uint32_t k = 0; k < limb.count; ++k) {
-        const std::uint32_t p = limb.first + k;
         if (k > 0) {
-            v -= (s.pointArc[p] - s.pointArc[p - 1]) * vScale_ /
-                 (s.pointRadius[p - 1] + s.pointRadius[p]);
+            v = vAfterStep(limb.first + k, v);
         } else if (startShown) {
             continue;
         }
@@ -196,6 +194,49 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
                                   limb.segments, wind));
     }
     keyV_[static_cast<std::size_t>(limb.endKey)] = v;
+}
+
+// Texture v at limb point `point` from v at the point before it (see the file comment).
+double WeldBuilder::vAfterStep(std::uint32_t point, double v) const {
+    const WeldSkeleton& s = skeleton_;
+    return v - (s.pointArc[point] - s.pointArc[point - 1]) * vScale_ /
+                   (s.pointRadius[point - 1] + s.pointRadius[point]);
+}
+
+// An absorbed limb of a fallback junction whose hull failed: a tube through its points, run a
+// quarter of the radius past both end nodes and closed there by cones half the radius long,
+// as the fallback's arms are, so that it overlaps them (the solid union joins them).
+void WeldBuilder::tubeAbsorbedLimb(std::int32_t l) {
+    const WeldSkeleton& s = skeleton_;
+    const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
+    const int n = limb.segments;
+    double v = keyV_[static_cast<std::size_t>(limb.startKey)];
+    RingRecord previous{};
+    Vec3 normal = Vec3::Zero(), e1 = Vec3::Zero();
+    for (std::uint32_t k = 0; k < limb.count; ++k) {
+        RingPlace place = ringAtPoint(s, limb, k);
+        const double past = 0.25 * place.radius;
+        if (k == 0) place.center -= past * place.normal;
+        if (k + 1 == limb.count) place.center += past * place.normal;
+        if (k == 0) {
+            e1 = initialReference(place.normal);
+        } else {
+            v = vAfterStep(limb.first + k, v);
+            const Vec3 step = place.center - previous.center;
+            const double length = step.norm();
+            e1 = transportReference(e1, normal, length > 0.0 ? Vec3(step / length) : place.normal,
+                                    place.normal);
+        }
+        normal = place.normal;
+        const RingRecord ring = emitRing(place, e1, static_cast<float>(v), n, windAt(place));
+        if (k == 0) {
+            emitCap(ring, -normal, false, place.center - 2.0 * past * normal);
+        } else {
+            emitSides(previous.base, ring.base, n);
+        }
+        previous = ring;
+    }
+    emitCap(previous, normal, true, previous.center + 0.5 * previous.radius * normal);
 }
 
 RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v, int n,

@@ -59,6 +59,7 @@ TEST(WeldCli, LsystemUnionUnitesTheWeldedBark) {
     const nlohmann::json united = stats("lsystem " + file + " -n 4 --union -o " + glb, dir);
     EXPECT_EQ(united["unions_applied"], 1);
     EXPECT_EQ(united["unions_failed"], 0);
+    EXPECT_EQ(united["union_crossings_left"], 0);
     EXPECT_NE(united["triangles"], welded["triangles"]);
     ASSERT_TRUE(fs::exists(glb));
     keepForValidation(glb, "union_cli_tree_3d_tropism.glb");
@@ -81,6 +82,7 @@ TEST(WeldCli, ColonizeConfigUnionUnitesEveryTree) {
     const nlohmann::json united = stats("colonize " + file.string(), dir);
     EXPECT_EQ(united["unions_applied"], united["trees"]);
     EXPECT_EQ(united["unions_failed"], 0);
+    EXPECT_EQ(united["union_crossings_left"], 0);
 
     ringConfigWith(dir, {{"union", true}, {"weld", false}});  // contradicts the union
     const CommandResult r = runRamus("colonize " + file.string(), dir);
