@@ -82,6 +82,7 @@ private:
         Vec3 node;   // the branch node where the ring's limb meets the junction
         std::int32_t limb;
     };
+    RingRecord armBackToNode(const HullRing& h);  // welded_junction_mesh.cpp
     std::vector<HullRing> hullRings_;
     std::vector<Vec3> points_;
     std::vector<std::int32_t> pointRing_;   // per hull point: index into hullRings_

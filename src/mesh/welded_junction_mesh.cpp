@@ -143,31 +143,74 @@ std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
 // the points where their planes cross, which would join the arms' surfaces there. A flat cap
 // where the node is not in front of the ring. The absorbed rings' hull on its own, or where
 // that fails each absorbed limb as a tube of its own.
+// A fallback arm's tube from its ring back along its limb: a ring at every limb point between
+// the arm's ring and the node (a crowded junction pushes rings far along their limbs, up to
+// their far ends, and a straight tube from there would leave a bent limb). Returns the ring
+// nearest the node (the arm's own when no point lies between), facing away from the node.
+RingRecord WeldBuilder::armBackToNode(const HullRing& h) {
+    const WeldSkeleton& s = skeleton_;
+    const auto li = static_cast<std::size_t>(h.limb);
+    const WeldLimb& limb = s.limbs[li];
+    const double length = s.limbLength(limb);
+    const double ringArc = h.start ? junctions_.startOffset[li] : length - junctions_.endOffset[li];
+    RingRecord arm = h.ring;
+    double arc = ringArc;
+    double v = mesh_.uvs[arm.base].y();
+    const std::uint32_t inner = limb.count - 2;  // points 1 … count − 2 lie between the nodes
+    for (std::uint32_t i = 0; i < inner; ++i) {
+        const std::uint32_t k = h.start ? inner - i : 1 + i;  // from the ring towards the node
+        const std::uint32_t p = limb.first + k;
+        const double spacing = 0.05 * s.pointRadius[p];
+        if (h.start ? s.pointArc[p] >= ringArc - spacing : s.pointArc[p] <= ringArc + spacing) {
+            continue;
+        }
+        const RingPlace place = ringAtPoint(s, limb, k);
+        const Vec3 step = place.center - arm.center;
+        const double distance = step.norm();
+        const Vec3 armNormal = arm.e1.cross(arm.e2);
+        const Vec3 e1 = transportReference(
+            arm.e1, armNormal, distance > 0.0 ? Vec3(step / distance) : place.normal, place.normal);
+        const double dv = std::abs(s.pointArc[p] - arc) * vScale_ / (arm.radius + place.radius);
+        v += h.start ? dv : -dv;
+        arc = s.pointArc[p];
+        RingRecord ring = emitRing(place, e1, static_cast<float>(v), arm.n, windAt(place));
+        if (h.start) {
+            emitSides(ring.base, arm.base, arm.n);
+        } else {
+            emitSides(arm.base, ring.base, arm.n);
+            ring.outward = -place.normal;  // away from the end node
+        }
+        arm = ring;
+    }
+    return arm;
+}
+
 void WeldBuilder::fallbackJunction() {
     for (const HullRing& h : hullRings_) {
         if (!h.hole) continue;
-        const Vec3 capNormal = -h.ring.outward;
-        const double ahead = (h.node - h.ring.center).dot(capNormal);
-        if (!(ahead > 0.05 * h.ring.radius)) {
-            emitCap(h.ring, capNormal, !h.start, h.ring.center);
+        const RingRecord arm = armBackToNode(h);
+        const Vec3 capNormal = -arm.outward;
+        const double ahead = (h.node - arm.center).dot(capNormal);
+        if (!(ahead > 0.05 * arm.radius)) {
+            emitCap(arm, capNormal, !h.start, arm.center);
             continue;
         }
         // The ring past the node keeps the arm ring's frame; texture v runs on along the arm.
-        const Vec3 frameNormal = h.ring.e1.cross(h.ring.e2);
+        const Vec3 frameNormal = arm.e1.cross(arm.e2);
         RingPlace place;
-        place.center = h.node + 0.25 * h.ring.radius * capNormal;
+        place.center = h.node + 0.25 * arm.radius * capNormal;
         place.normal = frameNormal;
-        place.radius = h.ring.radius;
-        const float ringV = mesh_.uvs[h.ring.base].y();
-        const double dv = (ahead + 0.25 * h.ring.radius) * vScale_ / (2.0 * h.ring.radius);
+        place.radius = arm.radius;
+        const float ringV = mesh_.uvs[arm.base].y();
+        const double dv = (ahead + 0.25 * arm.radius) * vScale_ / (2.0 * arm.radius);
         const auto v = static_cast<float>(ringV + (h.start ? dv : -dv));
-        const RingRecord pastNode = emitRing(place, h.ring.e1, v, h.ring.n, h.ring.wind);
+        const RingRecord pastNode = emitRing(place, arm.e1, v, arm.n, arm.wind);
         if (h.start) {
-            emitSides(pastNode.base, h.ring.base, h.ring.n);
+            emitSides(pastNode.base, arm.base, arm.n);
         } else {
-            emitSides(h.ring.base, pastNode.base, h.ring.n);
+            emitSides(arm.base, pastNode.base, arm.n);
         }
-        emitCap(pastNode, capNormal, !h.start, place.center + 0.5 * h.ring.radius * capNormal);
+        emitCap(pastNode, capNormal, !h.start, place.center + 0.5 * arm.radius * capNormal);
     }
     const bool anyAbsorbed = std::any_of(hullRings_.begin(), hullRings_.end(),
                                          [](const HullRing& h) { return !h.hole; });
