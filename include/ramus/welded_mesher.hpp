@@ -41,8 +41,8 @@ struct WeldReport {
     /// surface stays closed but intersects itself there).
     std::size_t crossings = 0;
     std::size_t fallbacks = 0;  ///< junctions left as separately capped tubes (should be 0)
-    /// Limbs inside such a junction meshed as capped tubes of their own because the hull of
-    /// the junction's inner rings failed too (should be 0).
+    /// Limbs inside such junctions (between their merged branch nodes), meshed as capped tubes
+    /// of their own.
     std::size_t absorbedTubes = 0;
     std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
     /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).

@@ -17,9 +17,9 @@
 //   so no four are exactly coplanar (parallel equal rings would otherwise be); the output keeps
 //   the exact positions. The hull works on the rings' double-precision positions.
 // - Every hole is checked: its apex must carry n faces, each on one ring edge, all wound the way
-//   the tube expects. A junction failing any check (not seen on the examples) is closed
-//   conservatively instead: each arm's ring gets a cone past the node, absorbed rings their
-//   own hull.
+//   the tube expects. A junction failing any check (crowded junctions of dense plants) is
+//   closed conservatively instead: each arm's tube follows its limb to a ring past the node
+//   and a cone, and each absorbed limb becomes a capped tube of its own.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -141,8 +141,7 @@ std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
 // cone alone the arms met only in a needle around the node, and the union's moves pulled them
 // apart). Past the node rather than at it: rings of equal radius centred on one node share
 // the points where their planes cross, which would join the arms' surfaces there. A flat cap
-// where the node is not in front of the ring. The absorbed rings' hull on its own, or where
-// that fails each absorbed limb as a tube of its own.
+// where the node is not in front of the ring. Each absorbed limb as a tube of its own.
 // A fallback arm's tube from its ring back along its limb: a ring at every limb point between
 // the arm's ring and the node (a crowded junction pushes rings far along their limbs, up to
 // their far ends, and a straight tube from there would leave a bent limb). Returns the ring
@@ -212,12 +211,12 @@ void WeldBuilder::fallbackJunction() {
         }
         emitCap(pastNode, capNormal, !h.start, place.center + 0.5 * arm.radius * capNormal);
     }
-    const bool anyAbsorbed = std::any_of(hullRings_.begin(), hullRings_.end(),
-                                         [](const HullRing& h) { return !h.hole; });
-    if (!anyAbsorbed || hullJunction(false)) return;  // appends nothing when it fails
-    // Without that hull the absorbed limbs would leave a gap between the arms of their nodes
-    // and split the tree (ABOP 1.25: 103 absorbed rings whose incremental hull met a horizon
-    // that was not a simple cycle). An absorbed limb's rings are listed together.
+    // The limbs inside the junction (between its merged branch nodes) become tubes of their
+    // own. The convex hull of their rings, which this used before, spans the whole crowded
+    // cluster (up to 16 branch nodes): large faceted blobs where a fine crown should be (ABOP
+    // 2.8a), and where it failed (1.25: 103 rings whose incremental hull met a horizon that
+    // was not a simple cycle) the limbs had no surface and the tree split. An absorbed limb's
+    // rings are listed together.
     std::int32_t last = -1;
     for (const HullRing& h : hullRings_) {
         if (h.hole || h.limb == last) continue;

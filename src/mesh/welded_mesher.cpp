@@ -203,7 +203,7 @@ double WeldBuilder::vAfterStep(std::uint32_t point, double v) const {
                    (s.pointRadius[point - 1] + s.pointRadius[point]);
 }
 
-// An absorbed limb of a fallback junction whose hull failed: a tube through its points, run a
+// An absorbed limb of a fallback junction: a tube through its points, run a
 // quarter of the radius past both end nodes and closed there by cones half the radius long,
 // as the fallback's arms are, so that it overlaps them (the solid union joins them).
 void WeldBuilder::tubeAbsorbedLimb(std::int32_t l) {
