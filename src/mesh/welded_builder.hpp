@@ -47,6 +47,7 @@ private:
     WindSample windAt(const RingPlace& place) const;
     RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
                         const WindSample& wind);
+    RingRecord ringAfter(const RingRecord& previous, const RingPlace& place, float v);
     void emitSides(std::uint32_t a, std::uint32_t b, int n);
     void emitCap(const RingRecord& ring, const Vec3& normal, bool tip, const Vec3& centre);
 

@@ -164,15 +164,10 @@ RingRecord WeldBuilder::armBackToNode(const HullRing& h) {
             continue;
         }
         const RingPlace place = ringAtPoint(s, limb, k);
-        const Vec3 step = place.center - arm.center;
-        const double distance = step.norm();
-        const Vec3 armNormal = arm.e1.cross(arm.e2);
-        const Vec3 e1 = transportReference(
-            arm.e1, armNormal, distance > 0.0 ? Vec3(step / distance) : place.normal, place.normal);
         const double dv = std::abs(s.pointArc[p] - arc) * vScale_ / (arm.radius + place.radius);
         v += h.start ? dv : -dv;
         arc = s.pointArc[p];
-        RingRecord ring = emitRing(place, e1, static_cast<float>(v), arm.n, windAt(place));
+        RingRecord ring = ringAfter(arm, place, static_cast<float>(v));
         if (h.start) {
             emitSides(ring.base, arm.base, arm.n);
         } else {

@@ -209,34 +209,37 @@ double WeldBuilder::vAfterStep(std::uint32_t point, double v) const {
 void WeldBuilder::tubeAbsorbedLimb(std::int32_t l) {
     const WeldSkeleton& s = skeleton_;
     const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
-    const int n = limb.segments;
     double v = keyV_[static_cast<std::size_t>(limb.startKey)];
     RingRecord previous{};
-    Vec3 normal = Vec3::Zero(), e1 = Vec3::Zero();
     for (std::uint32_t k = 0; k < limb.count; ++k) {
         RingPlace place = ringAtPoint(s, limb, k);
         const double past = 0.25 * place.radius;
         if (k == 0) place.center -= past * place.normal;
         if (k + 1 == limb.count) place.center += past * place.normal;
         if (k == 0) {
-            e1 = initialReference(place.normal);
-        } else {
-            v = vAfterStep(limb.first + k, v);
-            const Vec3 step = place.center - previous.center;
-            const double length = step.norm();
-            e1 = transportReference(e1, normal, length > 0.0 ? Vec3(step / length) : place.normal,
-                                    place.normal);
+            previous = emitRing(place, initialReference(place.normal), static_cast<float>(v),
+                                limb.segments, windAt(place));
+            emitCap(previous, -place.normal, false, place.center - 2.0 * past * place.normal);
+            continue;
         }
-        normal = place.normal;
-        const RingRecord ring = emitRing(place, e1, static_cast<float>(v), n, windAt(place));
-        if (k == 0) {
-            emitCap(ring, -normal, false, place.center - 2.0 * past * normal);
-        } else {
-            emitSides(previous.base, ring.base, n);
-        }
+        v = vAfterStep(limb.first + k, v);
+        const RingRecord ring = ringAfter(previous, place, static_cast<float>(v));
+        emitSides(previous.base, ring.base, limb.segments);
         previous = ring;
     }
+    const Vec3 normal = previous.e1.cross(previous.e2);
     emitCap(previous, normal, true, previous.center + 0.5 * previous.radius * normal);
+}
+
+// The ring at `place` that follows ring `previous` of the same tube, its frame carried along
+// the step between them as the tube mesher's (rotation-minimizing).
+RingRecord WeldBuilder::ringAfter(const RingRecord& previous, const RingPlace& place, float v) {
+    const Vec3 step = place.center - previous.center;
+    const double length = step.norm();
+    const Vec3 e1 =
+        transportReference(previous.e1, previous.e1.cross(previous.e2),
+                           length > 0.0 ? Vec3(step / length) : place.normal, place.normal);
+    return emitRing(place, e1, v, previous.n, windAt(place));
 }
 
 RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
