@@ -54,7 +54,7 @@ private:
     // welded_junction_mesh.cpp
     void meshJunction(NodeId cluster);
     void gatherJunction(NodeId cluster);
-    bool hullJunction(bool holes);
+    bool hullJunction();
     void fallbackJunction();
     std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
 

@@ -53,16 +53,15 @@ void WeldBuilder::gatherJunction(NodeId cluster) {
     }
 }
 
-// Hull of the gathered rings (only the absorbed ones unless `holes`); on success appends the
+// Hull of the gathered rings, the arms' discs cut out as holes; on success appends the
 // faces that are not ring discs and returns true.
-bool WeldBuilder::hullJunction(bool holes) {
+bool WeldBuilder::hullJunction() {
     points_.clear();
     pointRing_.clear();
     pointIndex_.clear();
     const Vec3 origin = hullRings_.front().ring.center;
     for (std::size_t r = 0; r < hullRings_.size(); ++r) {
         const HullRing& h = hullRings_[r];
-        if (h.hole && !holes) continue;
         const AngleTable& angles = table(h.ring.n);
         for (int k = 0; k < h.ring.n; ++k) {
             const auto i = static_cast<std::size_t>(k);
@@ -107,7 +106,7 @@ bool WeldBuilder::hullJunction(bool holes) {
         }
     }
     for (std::size_t r = 0; r < hullRings_.size(); ++r) {
-        if (holes && hullRings_[r].hole && coneFaces[r] != hullRings_[r].ring.n) return false;
+        if (hullRings_[r].hole && coneFaces[r] != hullRings_[r].ring.n) return false;
     }
     for (const auto& face : hull_.faces()) {
         if (pointIndex_[face[0]] < 0 || pointIndex_[face[1]] < 0 || pointIndex_[face[2]] < 0) {
@@ -225,7 +224,7 @@ void WeldBuilder::meshJunction(NodeId cluster) {
     gatherJunction(cluster);
     if (hullRings_.empty()) return;
     const std::size_t before = mesh_.indices.size();
-    if (hullJunction(true)) return;
+    if (hullJunction()) return;
     mesh_.indices.resize(before);
     ++report_.fallbacks;
     fallbackJunction();
