@@ -27,7 +27,7 @@ struct SolidUnionReport {
     std::size_t attempts = 0;          ///< tries with different moves (at most 3)
     std::size_t cavitiesFilled = 0;    ///< enclosed pockets whose inner surface was removed
     std::size_t enclosedPieces = 0;    ///< pieces inside such pockets, removed with them
-    /// separate pieces with < 1e-7 of the largest piece's volume (wedges the cut leaves where
+    /// separate pieces with < 1e-6 of the largest piece's volume (wedges the cut leaves where
     /// surfaces graze), removed
     std::size_t sliversRemoved = 0;
     /// Triangle pairs of the result that still cross (exact test on the float positions):
@@ -52,7 +52,7 @@ struct SolidUnionReport {
 /// corner of a piece interpolates normal, tangent, UV and custom attributes of the input
 /// triangle it came from (normals and tangents renormalized). Pockets enclosed by the solid
 /// are filled (their surface and pieces inside them removed), and separate slivers with less
-/// than 1e-7 of the largest piece's volume are removed. Primitives are kept in order,
+/// than 1e-6 of the largest piece's volume are removed. Primitives are kept in order,
 /// each with the pieces of its own triangles. The result must use every edge (welded by
 /// position) as often in one direction as in the other; rounding the cut positions to float
 /// can break that, pinch sheets together along an edge or make grazing surfaces cross, so up

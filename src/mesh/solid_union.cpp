@@ -177,11 +177,12 @@ std::vector<char> uncollapsedTriangles(const std::vector<std::uint32_t>& weld,
 }
 
 // A separate closed piece of the result with less than this fraction of the largest piece's
-// volume is a sliver: where surfaces graze, the cut leaves wedges of 4–6 triangles a few
+// volume is a sliver: where surfaces graze, the cut leaves wedges of 4–8 triangles a few
 // thousandths of a unit thick beside the main surface (ABOP 1.24a, 1.25, 2.8a: 1e-13–1.6e-10
-// of the largest piece's volume, while the smallest real separate piece measured, a branch
-// cluster of 1.25, has 2e-4 of it).
-constexpr double kSliverVolume = 1e-7;
+// of the largest piece's volume; 1.31a: 1.1e-7, 8 triangles, once its fallback junctions mesh
+// their inner limbs as tubes), while the smallest real separate piece measured, a branch
+// cluster of 1.25, had 2e-4 of it.
+constexpr double kSliverVolume = 1e-6;
 
 // Per triangle: whether it lies on the outer surface of the solid. The union's boundary is the
 // outer surface of each solid piece, plus the inward-facing surface of every pocket that the
