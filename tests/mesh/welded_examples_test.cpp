@@ -209,8 +209,9 @@ std::pair<std::size_t, std::size_t> branchesOutside(const BranchTree& tree, cons
 }
 
 // Edge midpoints outside the welded surface per L-system example as measured (session 14,
-// docs/welded.md "Quality and limits"): 2.8a has 8 beside two crowded junctions, not analysed
-// yet. They must not grow; every other example has none.
+// docs/welded.md "Quality and limits"): 2.8a has 8 in hull junctions whose rings lie past a
+// bend of their limb (the hull spans the chord). They must not grow; every other example has
+// none.
 std::size_t branchesOutsideBound(const std::string& example) {
     return example == "abop_2_8a" ? 8 : 0;
 }
