@@ -44,6 +44,9 @@ struct WeldReport {
     /// Limbs inside such junctions (between their merged branch nodes), meshed as capped tubes
     /// of their own.
     std::size_t absorbedTubes = 0;
+    /// Branch nodes the hull of their rings left (nearly) bare, as where branches fold back
+    /// along their parent, closed over by a ball of the thickest branch's radius.
+    std::size_t nodeBalls = 0;
     std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
     /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).
     std::size_t junctionTriangles = 0;

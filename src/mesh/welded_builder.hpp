@@ -43,6 +43,7 @@ private:
     void meshLimb(std::int32_t limb);
     void meshAbsorbedLimb(std::int32_t limb);
     void tubeAbsorbedLimb(std::int32_t limb);
+    void emitPointsBeforeRings(std::int32_t limb);
     double vAfterStep(std::uint32_t point, double v) const;
     WindSample windAt(const RingPlace& place) const;
     RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
@@ -55,6 +56,8 @@ private:
     void meshJunction(NodeId cluster);
     void gatherJunction(NodeId cluster);
     bool hullJunction();
+    bool addNodeBalls();
+    double depthInHull(const Vec3& point) const;
     void fallbackJunction();
     std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
 
@@ -69,6 +72,10 @@ private:
     std::vector<RingRecord> startRing_, endRing_;  // per limb: its rings at junctions
     std::vector<std::uint32_t> discFirst_;         // per limb + 1: absorbed rings in discs_
     std::vector<RingRecord> discs_;
+    // Per limb side (2 l: at its start, 2 l + 1: at its end) + 1: rings of its inner points
+    // between the junction's node and the limb's ring there (hull points) in before_.
+    std::vector<std::uint32_t> beforeFirst_;
+    std::vector<RingRecord> before_;
     std::vector<LimbRing> rings_;  // rings of the limb being meshed, reused
     Mesh mesh_;
     TreeWind wind_;  // when params.tube.windAttributes
@@ -76,9 +83,16 @@ private:
     WeldReport report_;
 
     // Junction scratch, reused.
+    enum class HullRingKind : std::uint8_t {
+        Arm,       // an arm's ring: its disc is cut out (a hole)
+        Absorbed,  // a ring of a limb inside the junction: plain points
+        Before,    // a ring of an arm's limb between the node and the arm's ring: plain points
+        Ball,      // a latitude ring of a ball around an exposed branch node: plain points
+    };
     struct HullRing {
         RingRecord ring;
-        bool hole;   // an arm's ring (its disc is cut out) or an absorbed ring (plain points)
+        HullRingKind kind;
+        bool hole() const { return kind == HullRingKind::Arm; }
         bool start;  // the ring starts its limb (else it ends it)
         Vec3 node;   // the branch node where the ring's limb meets the junction
         std::int32_t limb;

@@ -70,6 +70,17 @@ private:
     std::vector<std::uint8_t> solved_;
     std::vector<Arm> arms_;
     std::vector<Disc> discs_;
+    std::vector<Disc> bends_;               // inner points of the arms' limbs before their rings
+    std::vector<std::uint32_t> bendOwner_;  // per bend: its arm
+    struct Front {
+        double front;
+        double cosine;
+        std::int32_t partner;  // the arm whose ring it is, or -1
+    };
+    Front worstFront(std::size_t arm) const;
+    double pairStep(std::size_t arm) const;
+    double straightAhead(const Arm& arm) const;
+    std::vector<Front> fronts_;
     std::vector<double> step_;
 };
 
@@ -151,6 +162,88 @@ void JunctionSolver::gather(NodeId cluster) {
     }
 }
 
+// How far the farthest point of another ring (arms, discs of absorbed limbs, points before
+// the other arms' rings) reaches in front of arm i's ring plane, clearance included; with the
+// arm it belongs to and the cosine between the two rings' normals when it is an arm's ring.
+JunctionSolver::Front JunctionSolver::worstFront(std::size_t i) const {
+    const RingPlace& p = arms_[i].place;
+    Front worst{-1e300, 0.0, -1};
+    // Clearance margin × the smaller radius: a thin twig's ring may come as close to a thick
+    // limb's ring as its own size allows, which keeps the joint tight.
+    auto consider = [&](const Disc& d, double clearance, std::int32_t arm) {
+        const double cosine = p.normal.dot(d.normal);
+        const double front = (d.center - p.center).dot(p.normal) +
+                             d.radius * std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) +
+                             clearance * std::min(d.radius, arms_[i].radius);
+        if (front > worst.front) worst = {front, arm >= 0 ? cosine : 0.0, arm};
+    };
+    for (std::size_t j = 0; j < arms_.size(); ++j) {
+        const RingPlace& q = arms_[j].place;
+        if (j != i) consider({q.center, q.normal, q.radius}, margin_, static_cast<std::int32_t>(j));
+    }
+    for (const Disc& d : discs_) consider(d, margin_, -1);
+    // An arm's own points before its ring are behind it by construction
+    // (forEachPointBeforeRing).
+    for (std::size_t b = 0; b < bends_.size(); ++b) {
+        if (bendOwner_[b] != i) consider(bends_[b], margin_, -1);
+    }
+    // But its ring at the branch node must be behind it too: a limb that runs back along its
+    // parent and turns can put its ring's plane through the node, and the hull (even a ball
+    // there, WeldBuilder::addNodeBalls) could not cover the node. On a straight limb this
+    // holds from the start.
+    const WeldLimb& l = s_.limbs[static_cast<std::size_t>(arms_[i].limb)];
+    const std::uint32_t k = arms_[i].atEnd ? l.count - 1 : 0;
+    consider({s_.pointPosition[l.first + k], pointDirection(s_, l, k), arms_[i].radius},
+             kBeforeClearance * margin_, -1);
+    return worst;
+}
+
+// The step of arm i: plain, its worst front (the ring moves just clear of the others as they
+// stand, so the offsets grow towards the smallest solution from below and never pass it).
+// Plain steps settle two rings at a small angle θ slowly, though: each step only swaps the
+// pair's fronts, gaining front·(1 − cos θ). So two arm rings that are each other's worst
+// partner step together by the exact solution of their two constraints on straight limbs,
+// δ_i − c·δ_j = f_i and δ_j − c·δ_i = f_j (c = cos θ), unless that would move one of them
+// back; both steps are scaled down alike so that neither ring passes the next point of its
+// limb, where a bend would break that linear model (the plain step where that leaves less).
+// (Accelerating each ring on its own, as this did before, made the two leapfrog each other ever
+// farther out along their limbs: limbs absorbed and junctions merged that had room, in dense plants
+// hundreds of them.)
+double JunctionSolver::pairStep(std::size_t i) const {
+    const Front& f = fronts_[i];
+    const double tolerance = 1e-9 * arms_[i].radius;
+    const double plain = f.front > tolerance ? f.front : 0.0;
+    if (f.partner < 0) return plain;
+    const auto j = static_cast<std::size_t>(f.partner);
+    const Front& g = fronts_[j];
+    if (g.partner != static_cast<std::int32_t>(i) || !(f.cosine > 0.0 && f.cosine < 1.0)) {
+        return plain;
+    }
+    const double c = f.cosine;
+    const double mine = (f.front + c * g.front) / (1.0 - c * c);
+    const double theirs = (g.front + c * f.front) / (1.0 - c * c);
+    if (!(mine > tolerance && theirs >= 0.0)) return plain;
+    const double scale = std::min({1.0, straightAhead(arms_[i]) / mine,
+                                   theirs > 0.0 ? straightAhead(arms_[j]) / theirs : 1.0});
+    return std::max(plain, scale * mine);
+}
+
+// Arc length from the arm's ring to the end of the limb's edge it lies on, away from the
+// junction (0 at a point of the limb: its normal is the edge's before the point, a step would
+// take it onto the next edge).
+double JunctionSolver::straightAhead(const Arm& arm) const {
+    const WeldLimb& l = s_.limbs[static_cast<std::size_t>(arm.limb)];
+    const double length = s_.limbLength(l);
+    const double ringArc = arm.atEnd ? length - arm.t : arm.t;
+    for (std::uint32_t i = 1; i < l.count; ++i) {
+        const std::uint32_t k = arm.atEnd ? l.count - 1 - i : i;
+        const double ahead =
+            arm.atEnd ? ringArc - s_.pointArc[l.first + k] : s_.pointArc[l.first + k] - ringArc;
+        if (ahead >= 0.0) return ahead;
+    }
+    return 0.0;
+}
+
 double JunctionSolver::gap(std::int32_t limb) const {
     const WeldLimb& l = s_.limbs[static_cast<std::size_t>(limb)];
     return 0.02 * (s_.pointRadius[l.first] + s_.pointRadius[l.first + l.count - 1]);
@@ -161,37 +254,27 @@ double JunctionSolver::gap(std::int32_t limb) const {
 std::int32_t JunctionSolver::placeRings(bool clamp) {
     std::vector<double>& step = step_;
     step.assign(arms_.size(), 0.0);
+    fronts_.resize(arms_.size());
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-        for (Arm& arm : arms_) {
+        bends_.clear();
+        bendOwner_.clear();
+        for (std::size_t i = 0; i < arms_.size(); ++i) {
+            Arm& arm = arms_[i];
             const WeldLimb& l = s_.limbs[static_cast<std::size_t>(arm.limb)];
             arm.place = ringOnLimb(s_, l, arm.atEnd, arm.t);
+            forEachPointBeforeRing(s_, l, arm.atEnd, arm.t, arm.place, kBeforeClearance * margin_,
+                                   [&](std::uint32_t k, const Vec3& normal) {
+                                       bends_.push_back({s_.pointPosition[l.first + k], normal,
+                                                         s_.pointRadius[l.first + k]});
+                                       bendOwner_.push_back(static_cast<std::uint32_t>(i));
+                                   });
         }
         bool moved = false;
         for (std::size_t i = 0; i < arms_.size(); ++i) {
-            const RingPlace& p = arms_[i].place;
-            double worst = -1e300;
-            double worstCos = 0.0;
-            // Clearance margin × the smaller radius: a thin twig's ring may come as close to
-            // a thick limb's ring as its own size allows, which keeps the joint tight.
-            auto consider = [&](const Vec3& c, const Vec3& n, double r, bool isArm) {
-                const double cosine = p.normal.dot(n);
-                const double front = (c - p.center).dot(p.normal) +
-                                     r * std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) +
-                                     margin_ * std::min(r, arms_[i].radius);
-                if (front > worst) worst = front, worstCos = isArm ? cosine : 0.0;
-            };
-            for (std::size_t j = 0; j < arms_.size(); ++j) {
-                if (j != i)
-                    consider(arms_[j].place.center, arms_[j].place.normal, arms_[j].place.radius,
-                             true);
-            }
-            for (const Disc& d : discs_) consider(d.center, d.normal, d.radius, false);
-            const double tolerance = 1e-9 * arms_[i].radius;
-            // Plain steps first (no overshoot); the accelerated step only for slow pairs.
-            const double divisor = iteration < 24 ? 1.0 : std::max(1.0 - worstCos, 0.25);
-            step[i] = worst > tolerance ? worst / divisor : 0.0;
-            moved = moved || step[i] > 0.0;
+            fronts_[i] = worstFront(i);
+            moved = moved || fronts_[i].front > 1e-9 * arms_[i].radius;
         }
+        for (std::size_t i = 0; i < arms_.size(); ++i) step[i] = pairStep(i);
         if (!moved) break;
         moved = false;  // now: did any ring actually move (rings at their limb's end stay)
         for (std::size_t i = 0; i < arms_.size(); ++i) {

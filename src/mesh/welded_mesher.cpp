@@ -114,8 +114,13 @@ void WeldBuilder::gatherLimbRings(std::int32_t l) {
         // A ring at an inner node faces the bisector of its bend, a junction's ring faces the
         // limb: close to each other they cross, and the tube between them folds into the hull.
         if (startJunction && rings_.size() == 1 && !ringsApart(rings_[0].place, inner)) continue;
-        if (endJunction && !ringsApart(inner, end)) continue;
         rings_.push_back({inner, 0.0});
+    }
+    // The same at the end, from the end ring back to the first ring clear of it: a ring
+    // farther back need not be (on a limb that turns by more than a right angle, distant
+    // rings face away from the end ring), the tube runs through the ones between.
+    while (endJunction && rings_.size() > 1 && !ringsApart(rings_.back().place, end)) {
+        rings_.pop_back();
     }
     rings_.push_back({end, 0.0});
 
@@ -162,6 +167,39 @@ void WeldBuilder::meshLimb(std::int32_t l) {
         endRing_[static_cast<std::size_t>(l)] = previous;
     } else {
         emitCap(previous, normal, true, previous.center);
+    }
+    emitPointsBeforeRings(l);
+}
+
+// Rings at the inner points of limb `l` between a junction's node and the limb's ring there
+// (forEachPointBeforeRing), as hull points of that junction: without them a limb that bends
+// there is cut off by the hull's chord. Texture v runs from the node as along the tube.
+void WeldBuilder::emitPointsBeforeRings(std::int32_t l) {
+    const WeldSkeleton& s = skeleton_;
+    const auto li = static_cast<std::size_t>(l);
+    const WeldLimb& limb = s.limbs[li];
+    for (const bool atEnd : {false, true}) {
+        const NodeId node = atEnd ? limb.endKey : limb.startKey;
+        if (junctions_.cluster[static_cast<std::size_t>(node)] >= 0) {
+            const double t = atEnd ? junctions_.endOffset[li] : junctions_.startOffset[li];
+            double v = keyV_[static_cast<std::size_t>(node)];
+            std::uint32_t previous = atEnd ? limb.count - 1 : 0;
+            const RingPlace ring = ringOnLimb(s, limb, atEnd, t);
+            forEachPointBeforeRing(s, limb, atEnd, t, ring, kBeforeClearance * margin_,
+                                   [&](std::uint32_t k, const Vec3&) {
+                                       // The step between points k and `previous` (neighbours), ≤ 0
+                                       // along the limb.
+                                       const double dv =
+                                           vAfterStep(limb.first + std::max(k, previous), 0.0);
+                                       v += atEnd ? -dv : dv;
+                                       previous = k;
+                                       const RingPlace place = ringAtPoint(s, limb, k);
+                                       before_.push_back(emitRing(
+                                           place, initialReference(place.normal),
+                                           static_cast<float>(v), limb.segments, windAt(place)));
+                                   });
+        }
+        beforeFirst_[2 * li + (atEnd ? 1 : 0) + 1] = static_cast<std::uint32_t>(before_.size());
     }
 }
 
@@ -317,6 +355,7 @@ Mesh WeldBuilder::build(WeldReport* report) {
     startRing_.assign(limbs, {});
     endRing_.assign(limbs, {});
     discFirst_.assign(limbs + 1, 0);
+    beforeFirst_.assign(2 * limbs + 1, 0);
     // Upper bounds without junctions: a ring per point plus caps; junctions add about as
     // many triangles as their rings have vertices.
     std::size_t vertices = 0;
@@ -335,6 +374,8 @@ Mesh WeldBuilder::build(WeldReport* report) {
         const auto id = static_cast<std::int32_t>(l);
         if (junctions_.absorbed[l]) {
             meshAbsorbedLimb(id);
+            beforeFirst_[2 * l + 1] = beforeFirst_[2 * l + 2] =
+                static_cast<std::uint32_t>(before_.size());
         } else {
             meshLimb(id);
         }
@@ -347,8 +388,11 @@ Mesh WeldBuilder::build(WeldReport* report) {
         RAMUS_ASSERT(windOut_.vertexCount() == mesh_.positions.size());
         windOut_.moveInto(mesh_);
     }
-    // Rings of absorbed limbs inside a hull are used by no triangle.
-    if (junctions_.absorbedLimbs + junctions_.merges > 0) removeUnusedVertices(mesh_);
+    // Rings of absorbed limbs, of points before arm rings and of balls inside a hull are used
+    // by no triangle (nor by any where their junction fell back).
+    if (junctions_.absorbedLimbs + junctions_.merges + report_.nodeBalls > 0 || !before_.empty()) {
+        removeUnusedVertices(mesh_);
+    }
     if (!mesh_.indices.empty()) {
         mesh_.materials.push_back(params_.tube.material);
         mesh_.primitives.push_back(

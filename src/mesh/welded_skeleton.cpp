@@ -29,6 +29,8 @@ int segmentsFor(const TubeMeshParams& params, double radius, double maxRadius) {
 // ABOP 1.24b's `[F]` and the `F` of the following branch from the same state, and 1.24f's
 // `+X` and `+F` along the same line; the copies agree to rounding, far below this.
 constexpr double kSiblingTolerance = 1e-3;
+// Chains turning by more than 120° at a node (cosine of the turn below this) get a junction.
+constexpr double kFoldCosine = -0.5;
 
 // Drawn edges by the grid cell of their end node, to find an edge drawn again from another
 // node: ABOP 1.31a's lattice of unit steps at multiples of 22.5° sends later branches along
@@ -106,6 +108,18 @@ private:
     std::unordered_multimap<Cell, NodeId, CellHash> ends_;
 };
 
+// Whether the chain through `node` (one drawn edge in, one to `child` out) turns by more than
+// kFoldCosine allows. A tube ring there would face the bisector of a bend that sends the tube
+// back along itself (colonization's tips at times grow back to their parent's node after the
+// branch-angle reduction: turns of 165–179°), so its tube folds flat; as a key node it gets a
+// junction instead, whose hull closes over the bend as at a fork.
+bool foldsBack(const BranchTree& tree, const WeldSkeleton& s, NodeId node, NodeId child) {
+    const Vec3& at = tree.node(node).position;
+    const Vec3 in =
+        at - tree.node(s.rep[static_cast<std::size_t>(tree.node(node).parent)]).position;
+    const Vec3 out = tree.node(child).position - at;
+    return in.dot(out) < kFoldCosine * in.norm() * out.norm();
+}
 // Merges every node closer than the merge distance to its (merged) parent into it, and every
 // node that coincides with an earlier sibling (an edge drawn twice) into that sibling, which
 // keeps the thicker radius; the merged node's children then hang from its representative, so
@@ -169,7 +183,8 @@ void mergeNodes(const BranchTree& tree, WeldSkeleton& s, std::vector<double>& ra
     }
     s.key.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
-        const bool chainInterior = s.degree[i] == 2 && incoming[i] != 0;
+        const bool chainInterior = s.degree[i] == 2 && incoming[i] != 0 &&
+                                   !foldsBack(tree, s, static_cast<NodeId>(i), firstChild[i]);
         s.key[i] = s.rep[i] == static_cast<NodeId>(i) && s.degree[i] > 0 && !chainInterior;
     }
 }

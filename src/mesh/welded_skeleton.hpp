@@ -4,6 +4,8 @@
 // (welded_*.cpp).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -64,6 +66,47 @@ Vec3 pointDirection(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uin
 /// The ring at limb point k (its node), facing pointDirection. Its edge is the one into the
 /// point's node (k = 0: the start of the limb's first edge), as buildTubeMesh's ring there.
 RingPlace ringAtPoint(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uint32_t k);
+
+/// Calls visit(k) for the inner points k of `limb` that lie between its start node (or its end
+/// node, `fromEnd`) and the junction ring `ring` (ringOnLimb at arc length `t` from that node,
+/// normal away from the node), from the node outwards: a junction's hull spans these points
+/// instead of a tube, and where the limb bends there their rings must be hull points, or the
+/// hull cuts the bend off along the chord from the node to the ring. Points within 5 % of
+/// their radius of the ring are left out (the ring covers them), and so are points whose ring
+/// reaches to within `clearance` × the smaller radius of the ring's plane (a bend sharper than
+/// the tube's radius folds the tube there anyway, and such a point would keep the ring from
+/// being a face of the hull), and points on the chord (kBeforeOffChord).
+/// Points within this fraction of their radius of the chord are left out by
+/// forEachPointBeforeRing.
+constexpr double kBeforeOffChord = 0.1;
+/// The `clearance` of forEachPointBeforeRing, as a fraction of the junction margin: far above
+/// the hull's apex lift (2e-4 of the margin), so the ring stays a face of the hull.
+constexpr double kBeforeClearance = 0.25;
+
+template <class Visit>
+void forEachPointBeforeRing(const WeldSkeleton& s, const WeldLimb& limb, bool fromEnd, double t,
+                            const RingPlace& ring, double clearance, Visit visit) {
+    const double length = s.limbLength(limb);
+    for (std::uint32_t i = 1; i + 1 < limb.count; ++i) {
+        const std::uint32_t k = fromEnd ? limb.count - 1 - i : i;
+        const std::uint32_t p = limb.first + k;
+        const double fromNode = fromEnd ? length - s.pointArc[p] : s.pointArc[p];
+        if (fromNode >= t - 0.05 * s.pointRadius[p]) return;
+        // On the chord from the node to the ring (a straight limb) the hull spans the tube
+        // anyway, and the point's ring would only add slivers along it.
+        const Vec3& node = s.pointPosition[fromEnd ? limb.first + limb.count - 1 : limb.first];
+        const Vec3 chord = ring.center - node;
+        const Vec3 off = s.pointPosition[p] - node;
+        const double along = std::clamp(off.dot(chord) / chord.squaredNorm(), 0.0, 1.0);
+        if ((off - along * chord).norm() <= kBeforeOffChord * s.pointRadius[p]) continue;
+        const Vec3 normal = pointDirection(s, limb, k);
+        const double cosine = ring.normal.dot(normal);
+        const double front = (s.pointPosition[p] - ring.center).dot(ring.normal) +
+                             s.pointRadius[p] * std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) +
+                             clearance * std::min(s.pointRadius[p], ring.radius);
+        if (front < 0.0) visit(k, normal);
+    }
+}
 
 /// Where the junction solver put things.
 struct WeldJunctions {

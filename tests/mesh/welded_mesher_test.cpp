@@ -262,6 +262,52 @@ TEST(WeldedMesh, ShortTipNextToAJunctionIsAbsorbed) {
     expectWelded(tree, segments(8, 8), "absorbed_tip");
 }
 
+// A limb that bends between its branch node and its ring: the two children leave at 9° to
+// each other, so their rings settle about 13 radii out, past the second child's 60° bend
+// (at 1.0 from the node). The hull takes in the limb's ring at the bend; spanning the chord
+// from the node to the ring instead, it cut the bend off (the edge's middle lay outside).
+TEST(WeldedMesh, LimbBendingBeforeItsRingStaysInside) {
+    BranchTree tree;
+    const NodeId a = tree.addChild(tree.addRoot(Vec3::Zero()), Vec3(0, 2, 0));
+    tree.addChild(a, Vec3(0.1, 5, 0));
+    const NodeId bend = tree.addChild(a, Vec3(-0.06, 2.8, 0));
+    tree.addChild(bend, Vec3(-1.8, 3.8, 0));
+    WeldedMeshParams params = segments(8, 8);
+    params.tube.leafRadius = 0.06;
+    expectWelded(tree, params, "bend_before_ring");
+}
+
+// A tip that grows back onto its parent branch (a 170° turn, as colonization's tips after the
+// branch-angle reduction): a tube ring there would face the bisector, across the branch, and
+// the tube fold flat. The turn becomes a junction of its two limbs instead.
+TEST(WeldedMesh, TipFoldingBackOntoItsBranchIsClosedOver) {
+    const BranchTree tree =
+        chain({Vec3(0, 0, 0), Vec3(0, 2, 0), Vec3(0, 4, 0), Vec3(0.35, 2.0, 0)});
+    WeldReport report;
+    buildWeldedTreeMesh(tree, segments(8, 8), &report);
+    EXPECT_EQ(report.junctions, 1u);
+    Expect expect;
+    expect.outside = 0.75;
+    expectWelded(tree, segments(8, 8), "tip_folds_back", expect);
+}
+
+// Both children grow back along their parent (160° turns): every ring lies below the branch
+// node, and their hull passed under it, leaving the branches' thickness at the node bare.
+// A ball of the thickest branch's radius closes over it.
+TEST(WeldedMesh, BranchNodeWhoseChildrenFoldBackIsCovered) {
+    BranchTree tree;
+    const NodeId a = tree.addChild(tree.addRoot(Vec3::Zero()), Vec3(0, 3, 0));
+    tree.addChild(a, Vec3(0.6, 1.4, 0));
+    tree.addChild(a, Vec3(-0.5, 1.5, 0.3));
+    WeldReport report;
+    const Mesh mesh = buildWeldedTreeMesh(tree, segments(8, 8), &report);
+    EXPECT_EQ(report.nodeBalls, 1u);
+    EXPECT_NEAR(test::windingNumber(mesh, Vec3(0, 3, 0)), 1.0, 1e-6);
+    Expect expect;
+    expect.outside = 0.75;
+    expectWelded(tree, segments(8, 8), "children_fold_back", expect);
+}
+
 TEST(WeldedMesh, EmptyAndRootOnlyTreesGiveEmptyMeshes) {
     EXPECT_TRUE(buildWeldedTreeMesh(BranchTree{}).positions.empty());
     BranchTree single;
