@@ -5,12 +5,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
 
 #include "ramus/export.hpp"
+#include "ramus/lsystem.hpp"
 #include "ramus/scene.hpp"
+#include "ramus/turtle.hpp"
 
 namespace ramus::test {
 namespace {
@@ -201,34 +204,35 @@ std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit,
     return found;
 }
 
-CapsuleUnion::CapsuleUnion(const BranchTree& tree, const std::vector<double>& radii,
-                           double rootRadius) {
+std::vector<Capsule> branchCapsules(const BranchTree& tree, const std::vector<double>& radii,
+                                    double rootRadius) {
+    std::vector<Capsule> capsules;
     for (std::size_t i = 1; i < tree.size(); ++i) {
         const BranchNode& node = tree.nodes()[i];
         if (node.hidden) continue;
         const auto parent = static_cast<std::size_t>(node.parent);
-        a_.push_back(tree.nodes()[parent].position);
-        b_.push_back(node.position);
         // A chain's edge tapers from its parent's radius; the root edge from the trunk radius.
         const bool continues = tree.nodes()[parent].firstChild == static_cast<NodeId>(i) &&
                                !tree.nodes()[parent].hidden;
-        ra_.push_back(continues ? (parent == 0 ? rootRadius : radii[parent]) : radii[i]);
-        rb_.push_back(radii[i]);
+        capsules.push_back({tree.nodes()[parent].position, node.position,
+                            continues ? (parent == 0 ? rootRadius : radii[parent]) : radii[i],
+                            radii[i]});
     }
+    return capsules;
 }
 
 // Round cone (Quilez): exact distance to the convex hull of two spheres.
 CapsuleDistance CapsuleUnion::at(const Vec3& p) const {
     CapsuleDistance best{std::numeric_limits<double>::infinity(), 0.0, 0.0};
-    for (std::size_t e = 0; e < a_.size(); ++e) {
-        const Vec3 ba = b_[e] - a_[e];
+    for (const Capsule& capsule : capsules_) {
+        const Vec3 ba = capsule.b - capsule.a;
         const double l2 = ba.squaredNorm();
-        const double r1 = ra_[e], r2 = rb_[e];
+        const double r1 = capsule.ra, r2 = capsule.rb;
         double d = 0.0;
         double s = 0.0;
-        const Vec3 pa = p - a_[e];
+        const Vec3 pa = p - capsule.a;
         if (l2 <= (r1 - r2) * (r1 - r2)) {
-            d = r1 >= r2 ? pa.norm() - r1 : (p - b_[e]).norm() - r2;
+            d = r1 >= r2 ? pa.norm() - r1 : (p - capsule.b).norm() - r2;
             s = r1 >= r2 ? 0.0 : 1.0;
         } else {
             const double rr = r1 - r2;
@@ -282,6 +286,25 @@ NodeId addDenseBranching(BranchTree& tree) {
         node = next;
     }
     return tree.addChild(node, Vec3(0, 2.5, 0), 0.3);
+}
+
+std::vector<std::string> exampleFiles(const std::string& dir, const std::string& extension) {
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(RAMUS_SOURCE_DIR + dir)) {
+        if (entry.path().extension() == extension) files.push_back(entry.path().string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+BranchTree growLSystem(const std::string& file, int derivations) {
+    const LSystem system = loadLSystem(file);
+    DeriveOptions options;
+    options.derivations = derivations;
+    const ModuleString word = deriveLSystem(system, options);
+    return interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings)).tree;
 }
 
 void writeWeldedGlb(const Mesh& mesh, const std::string& name) {

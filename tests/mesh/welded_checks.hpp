@@ -1,6 +1,7 @@
 // Checks of the welded tree meshes: topology after welding by position (closed, oriented
 // 2-manifold, Euler characteristic, components), volume, degenerate triangles, unit normals,
-// triangle–triangle self-intersections over a grid, and distance to the branch capsules.
+// triangle–triangle self-intersections over a grid, and distance to the branch capsules; and
+// the shipped examples' files and trees they are run on.
 #pragma once
 
 #include <cstddef>
@@ -50,8 +51,20 @@ std::size_t countSelfIntersections(
     const Mesh& mesh, std::size_t limit = 10,
     std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr);
 
-/// Signed distance to the union of the tree's tapered capsules (round cones between the
-/// nodes of every drawn edge, radii from `radii` as buildTubeMesh uses them); `radius`: of the
+/// The tapered capsule of a drawn edge: the round cone (convex hull of two spheres) from the
+/// parent's position `a` (radius `ra`) to the node's `b` (radius `rb`).
+struct Capsule {
+    Vec3 a, b;
+    double ra = 0.0, rb = 0.0;
+};
+
+/// One capsule per drawn edge of `tree`, radii from `radii` (computeEdgeRadii) as
+/// buildTubeMesh uses them: a chain's edge tapers from its parent's radius, the root edge from
+/// `rootRadius` (trunkMultiplier × radii[0]).
+std::vector<Capsule> branchCapsules(const BranchTree& tree, const std::vector<double>& radii,
+                                    double rootRadius);
+
+/// Signed distance to the union of the tree's tapered capsules (branchCapsules); `radius`: of the
 /// nearest capsule at the nearest point of its axis; `scale`: the largest such radius among the
 /// capsules whose surface is within their own radius of the point (the local branch size: at
 /// a junction, the thickest branch meeting there).
@@ -62,13 +75,13 @@ struct CapsuleDistance {
 };
 class CapsuleUnion {
 public:
-    CapsuleUnion(const BranchTree& tree, const std::vector<double>& radii, double rootRadius);
+    CapsuleUnion(const BranchTree& tree, const std::vector<double>& radii, double rootRadius)
+        : capsules_(branchCapsules(tree, radii, rootRadius)) {}
     CapsuleDistance at(const Vec3& p) const;
-    std::size_t size() const { return a_.size(); }
+    std::size_t size() const { return capsules_.size(); }
 
 private:
-    std::vector<Vec3> a_, b_;
-    std::vector<double> ra_, rb_;
+    std::vector<Capsule> capsules_;
 };
 
 /// Generalized winding number of `mesh` at `p` (≈ 1 inside a closed outward mesh, 0 outside).
@@ -77,6 +90,16 @@ double windingNumber(const Mesh& mesh, const Vec3& p);
 /// A thick trunk (radius 0.4) with four side branches every 0.1 of height — far closer than the
 /// trunk's radius, so their junctions merge — ending in a top at (0, 2.5, 0); returns the top.
 NodeId addDenseBranching(BranchTree& tree);
+
+/// Paths of the files in RAMUS_SOURCE_DIR + `dir` (e.g. "/examples/lsystems") whose extension
+/// is `extension` (e.g. ".lsys"), sorted.
+std::vector<std::string> exampleFiles(const std::string& dir, const std::string& extension);
+
+/// The file name of `path` without folder and extension.
+std::string stem(const std::string& path);
+
+/// The tree the L-system file `file` grows at `derivations` (-1: the file's default).
+BranchTree growLSystem(const std::string& file, int derivations = -1);
 
 /// Writes `mesh` as <$RAMUS_TEST_OUTPUT>/welded_<name>.glb when the variable is set.
 void writeWeldedGlb(const Mesh& mesh, const std::string& name);

@@ -7,38 +7,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "ramus/colonize.hpp"
-#include "ramus/lsystem.hpp"
-#include "ramus/turtle.hpp"
 #include "ramus/welded_mesher.hpp"
 #include "welded_checks.hpp"
 
 namespace ramus {
 namespace {
 
-std::vector<std::string> exampleFiles(const std::string& dir, const std::string& extension) {
-    std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(RAMUS_SOURCE_DIR + dir)) {
-        if (entry.path().extension() == extension) files.push_back(entry.path().string());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
-
-BranchTree growLSystem(const std::string& file, int derivations = -1) {
-    const LSystem system = loadLSystem(file);
-    DeriveOptions options;
-    options.derivations = derivations;
-    const ModuleString word = deriveLSystem(system, options);
-    return interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings)).tree;
-}
+using test::exampleFiles;
+using test::growLSystem;
+using test::stem;
 
 // Closed, consistently wound, genus 0 per closed part, positive volume. Returns the report
 // (and the mesh through `meshOut`).
