@@ -236,62 +236,40 @@ struct Bounds {
     // The welded rings are the tube rings; only where a stretch has another segment count than
     // its chain does the polygon change, by at most r (1 − cos 45°) ≈ 0.29 r at 4 segments.
     double lostDistance = 0.5;
-    double lostArea = 0.001;  // 0 measured on every L-system; a whole limb is far more
+    double lostArea = 0.001;  // ≤ 0.09 % measured but on the hedges; a whole limb is far more
     // Convex junctions bridge the crotches: up to 0.5 × the local radius off the capsules in
     // the hand-made cases (welded_mesher_test.cpp), plus the 0.29 r the tube polygons lie
     // inside them.
     double gainedDistance = 1.0;
-    double gainedArea = 0.005;  // at most 0.3 % measured on the examples within the above
+    double gainedArea = 0.005;  // ≤ 0.42 % measured on the examples within the above
 };
 
-// The examples beyond those tolerances, bounded at their values measured on 2026-12-04 (the
-// largest of the three views, docs/welded.md "Quality and limits") plus 15 %, rounded up: they
-// must not grow. Nothing the tubes show is missing in any of them; they gain silhouette where
-// junction hulls span more than the crotch (a 3-d check of triangle centres against the branch
-// capsules finds only junction triangles among the outliers: up to 48 local radii outside on
-// 2.8a, 5.9–15.7 on the 8 colonization trees checked). Open defects, not analysed further:
-// - the dense ABOP plants (1.24a–1.31a, 2.6d, 2.8a–c): faceted fans over whole clusters of
-//   tips, where branch nodes are merged and end branches absorbed into junctions (2.8a: 245
-//   merges and 236 absorbed limbs at 119 junctions; 78 % of the tube silhouette's area added,
-//   up to 30 radii from it).
-// - every colonization tree: webs in narrow crotches and over bends (e.g. a junction whose
-//   rings lie past a bend of their limb spans the chord, docs/welded.md), hulls over small
-//   clusters of twigs (hedge_1: 9.9 radii; conifer: 11.8 radii of a twig, a bump beside the
-//   trunk); lost: a twig about a pixel beside the tube one (at most 2.1 of its radii).
+// The examples beyond those tolerances, bounded at their values measured on 2026-12-04 after
+// session 15's ring solver (the largest of the three views, docs/welded.md "Quality and
+// limits") plus 15 %, rounded up: they must not grow. Nothing the tubes show is missing in any
+// of them (the hedges lose 0.11–0.18 % of their area, all within 0.24 radii: twigs a pixel
+// beside the tube ones). They gain silhouette where junction hulls span more than the crotch:
+// - ABOP 1.27 and 1.31a (and a little on 1.24a): junctions of clusters of tips whose limbs
+//   were absorbed or whose nodes merged, which stay in these three (1.27: 12 % of the area, up
+//   to 15 radii; before the solver change 30 % and 12 radii, 1.31a 48 % and 20.5).
+// - the hedges, fig3_2_ring and conifer: the base junction where several main branches leave
+//   the trunk at once is one convex hull over the whole crotch (hedge_4: 2.2 % of the area,
+//   6.9 radii), and on conifer a bump beside the trunk, 11.8 radii of the twig passing there.
+// Before the solver change (the rings of slow pairs leapfrogged out along their limbs) every
+// dense ABOP plant and every colonization tree was an exception here, e.g. 2.8a with 78 % of
+// the tube silhouette's area added up to 30 radii from it, 2.6d 90 % and 41 radii.
 const std::vector<std::pair<std::string, Bounds>>& exceptions() {
     static const std::vector<std::pair<std::string, Bounds>> kExceptions = {
-        {"abop_1_24a", {.gainedDistance = 4.1, .gainedArea = 0.024}},
-        {"abop_1_24b", {.gainedDistance = 5.7, .gainedArea = 0.12}},
-        {"abop_1_24c", {.gainedDistance = 11.0, .gainedArea = 0.21}},
-        {"abop_1_24d", {.gainedDistance = 14.0, .gainedArea = 0.26}},
-        {"abop_1_24e", {.gainedDistance = 4.5, .gainedArea = 0.021}},
-        {"abop_1_24f", {.gainedDistance = 33.0, .gainedArea = 0.88}},
-        {"abop_1_25", {.gainedDistance = 22.0, .gainedArea = 0.48}},
-        {"abop_1_27", {.gainedDistance = 14.0, .gainedArea = 0.34}},
-        {"abop_1_31a", {.gainedDistance = 24.0, .gainedArea = 0.56}},
-        {"abop_2_6d", {.gainedDistance = 48.0, .gainedArea = 1.1}},
-        {"abop_2_8a", {.gainedDistance = 36.0, .gainedArea = 0.9}},
-        {"abop_2_8b", {.gainedDistance = 37.0, .gainedArea = 0.18}},
-        {"abop_2_8c", {.gainedDistance = 11.0, .gainedArea = 0.092}},
-        {"broadleaf_0", {.lostDistance = 2.4, .gainedDistance = 3.3, .gainedArea = 0.0065}},
-        {"conifer_0", {.gainedDistance = 14.0, .gainedArea = 0.0067}},
-        {"fig3_2_ring_0", {.lostArea = 0.0014, .gainedDistance = 7.8, .gainedArea = 0.022}},
-        {"hedge_0",
-         {.lostDistance = 2.0, .lostArea = 0.0022, .gainedDistance = 3.6, .gainedArea = 0.039}},
-        {"hedge_1",
-         {.lostDistance = 1.6, .lostArea = 0.0013, .gainedDistance = 12.0, .gainedArea = 0.052}},
-        {"hedge_2",
-         {.lostDistance = 1.8, .lostArea = 0.0019, .gainedDistance = 7.9, .gainedArea = 0.045}},
-        {"hedge_3", {.lostArea = 0.0017, .gainedDistance = 6.1, .gainedArea = 0.037}},
-        {"hedge_4", {.lostArea = 0.002, .gainedDistance = 8.0, .gainedArea = 0.057}},
-        {"mesh_crown_0", {.gainedDistance = 5.0, .gainedArea = 0.0066}},
-        {"multi_trunk_0", {.lostDistance = 0.68, .gainedDistance = 3.1, .gainedArea = 0.0096}},
-        {"multi_trunk_1", {.lostDistance = 0.8, .gainedDistance = 11.0, .gainedArea = 0.014}},
-        {"multi_trunk_2", {.lostDistance = 0.63, .gainedDistance = 11.0, .gainedArea = 0.017}},
-        {"obstacle_0", {.gainedDistance = 5.1}},
-        {"roots_0", {.lostDistance = 2.4, .gainedDistance = 2.7}},
-        {"two_trees_0", {.gainedDistance = 3.5, .gainedArea = 0.0084}},
-        {"two_trees_1", {.lostDistance = 0.73, .gainedDistance = 1.6}},
+        {"abop_1_24a", {.gainedDistance = 1.2, .gainedArea = 0.019}},
+        {"abop_1_27", {.gainedDistance = 18.0, .gainedArea = 0.15}},
+        {"abop_1_31a", {.gainedDistance = 7.2, .gainedArea = 0.048}},
+        {"conifer_0", {.gainedDistance = 14.0, .gainedArea = 0.0064}},
+        {"fig3_2_ring_0", {.gainedDistance = 1.6, .gainedArea = 0.011}},
+        {"hedge_0", {.lostArea = 0.0021, .gainedDistance = 2.8, .gainedArea = 0.021}},
+        {"hedge_1", {.lostArea = 0.0014, .gainedDistance = 4.4, .gainedArea = 0.019}},
+        {"hedge_2", {.lostArea = 0.0014, .gainedDistance = 3.5, .gainedArea = 0.015}},
+        {"hedge_3", {.lostArea = 0.0015, .gainedDistance = 3.7, .gainedArea = 0.027}},
+        {"hedge_4", {.lostArea = 0.0013, .gainedDistance = 7.9, .gainedArea = 0.026}},
     };
     return kExceptions;
 }
