@@ -56,8 +56,8 @@ private:
     void meshJunction(NodeId cluster);
     void gatherJunction(NodeId cluster);
     bool hullJunction();
-    bool addNodeBalls();
     double depthInHull(const Vec3& point) const;
+    bool addNodeBalls();
     void fallbackJunction();
     std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
 
@@ -98,6 +98,8 @@ private:
         std::int32_t limb;
     };
     RingRecord armBackToNode(const HullRing& h);  // welded_junction_mesh.cpp
+    double ballRoom(const Vec3& node, std::size_t arms, double& radius) const;
+    void emitBall(const HullRing& h, double radius);
     std::vector<HullRing> hullRings_;
     std::vector<Vec3> points_;
     std::vector<std::int32_t> pointRing_;   // per hull point: index into hullRings_

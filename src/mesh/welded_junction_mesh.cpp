@@ -143,64 +143,75 @@ double WeldBuilder::depthInHull(const Vec3& point) const {
 // of their thickest branch's radius as hull points (latitude rings), shrunk so it stays
 // behind every arm's ring plane by the clearance. Returns whether any ball was added (the
 // hull must be built again). At an ordinary fork the node lies 0.2–1 of its radius inside the
-// hull (measured over the colonization examples: the faceted rings and the taper bring the
-// faces that close); less than kBareDepth of it is taken as bare (48 of 3 000 junctions there,
-// 26 of them with the node outside the hull).
+// hull (measured in session 15 on the first tree of 8 colonization examples: the faceted rings
+// and the taper bring the faces that close); less than kBareDepth of it is taken as bare (48
+// of 3 000 junctions there, 26 of them with the node outside the hull).
 constexpr double kBareDepth = 0.1;
 
 bool WeldBuilder::addNodeBalls() {
-    const WeldSkeleton& s = skeleton_;
     const std::size_t arms = hullRings_.size();
     bool added = false;
     for (std::size_t i = 0; i < arms; ++i) {
         const HullRing h = hullRings_[i];  // a copy: balls are appended to hullRings_
-        const WeldLimb& limb = s.limbs[static_cast<std::size_t>(h.limb)];
-        const NodeId node = h.start ? limb.startKey : limb.endKey;
         if (!h.hole() ||
             std::any_of(hullRings_.begin(), hullRings_.begin() + i,
                         [&](const HullRing& e) { return e.hole() && e.node == h.node; })) {
             continue;  // one ball per node
         }
         double radius = 0.0;
-        double room = std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j < arms; ++j) {
-            const HullRing& arm = hullRings_[j];
-            if (!arm.hole()) continue;
-            const WeldLimb& l = s.limbs[static_cast<std::size_t>(arm.limb)];
-            if (arm.node == h.node) {
-                radius =
-                    std::max(radius, s.pointRadius[arm.start ? l.first : l.first + l.count - 1]);
-            }
-            room = std::min(
-                room, (arm.ring.center - h.node).dot(arm.ring.outward) - margin_ * arm.ring.radius);
-        }
+        const double room = ballRoom(h.node, arms, radius);
         if (depthInHull(h.node) >= kBareDepth * radius) continue;
         const double ball = std::min(radius, room);
         if (!(ball > 0.05 * radius)) continue;
-        const Vec3 axis = h.ring.outward;
-        const Vec3 e1 = initialReference(axis);
-        const WindSample wind = params_.tube.windAttributes ? wind_.at(node) : WindSample{};
-        const auto v = static_cast<float>(keyV_[static_cast<std::size_t>(node)]);
-        constexpr int kLatitudes = 4;
-        for (int j = 1; j <= kLatitudes; ++j) {
-            const double polar = kPi * j / (kLatitudes + 1);
-            RingPlace place;
-            place.center = h.node + ball * std::cos(polar) * axis;
-            place.normal = axis;
-            place.radius = ball * std::sin(polar);
-            const RingRecord ring = emitRing(place, e1, v, h.ring.n, wind);
-            for (int k = 0; k <= ring.n; ++k) {  // shaded as the ball it approximates
-                Vec3f& normal = mesh_.normals[ring.base + static_cast<std::uint32_t>(k)];
-                normal = (mesh_.positions[ring.base + static_cast<std::uint32_t>(k)] -
-                          h.node.cast<float>())
-                             .normalized();
-            }
-            hullRings_.push_back({ring, HullRingKind::Ball, h.start, h.node, h.limb});
-        }
-        ++report_.nodeBalls;
+        emitBall(h, ball);
         added = true;
     }
     return added;
+}
+
+// How large a ball at `node` may be: the least distance from it to an arm's ring plane, less
+// the clearance; `radius` receives the thickest radius of the arms at `node` (of the first
+// `arms` hull rings, which are the junction's own).
+double WeldBuilder::ballRoom(const Vec3& node, std::size_t arms, double& radius) const {
+    double room = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < arms; ++j) {
+        const HullRing& arm = hullRings_[j];
+        if (!arm.hole()) continue;
+        const WeldLimb& l = skeleton_.limbs[static_cast<std::size_t>(arm.limb)];
+        if (arm.node == node) {
+            radius = std::max(radius,
+                              skeleton_.pointRadius[arm.start ? l.first : l.first + l.count - 1]);
+        }
+        room = std::min(room,
+                        (arm.ring.center - node).dot(arm.ring.outward) - margin_ * arm.ring.radius);
+    }
+    return room;
+}
+
+// A ball of `radius` at arm h's branch node, as four latitude rings about the arm's axis
+// (hull points, shaded as the ball), with the wind values of the node (as absorbed limbs).
+void WeldBuilder::emitBall(const HullRing& h, double radius) {
+    const WeldLimb& limb = skeleton_.limbs[static_cast<std::size_t>(h.limb)];
+    const NodeId node = h.start ? limb.startKey : limb.endKey;
+    const Vec3 axis = h.ring.outward;
+    const Vec3 e1 = initialReference(axis);
+    const WindSample wind = params_.tube.windAttributes ? wind_.at(node) : WindSample{};
+    const auto v = static_cast<float>(keyV_[static_cast<std::size_t>(node)]);
+    constexpr int kLatitudes = 4;
+    for (int j = 1; j <= kLatitudes; ++j) {
+        const double polar = kPi * j / (kLatitudes + 1);
+        RingPlace place;
+        place.center = h.node + radius * std::cos(polar) * axis;
+        place.normal = axis;
+        place.radius = radius * std::sin(polar);
+        const RingRecord ring = emitRing(place, e1, v, h.ring.n, wind);
+        for (std::uint32_t k = 0; k <= static_cast<std::uint32_t>(ring.n); ++k) {
+            mesh_.normals[ring.base + k] =
+                (mesh_.positions[ring.base + k] - h.node.cast<float>()).normalized();
+        }
+        hullRings_.push_back({ring, HullRingKind::Ball, h.start, h.node, h.limb});
+    }
+    ++report_.nodeBalls;
 }
 
 // The mesh vertex of hull point `point` in `face`: a ring's vertex 0 is taken as its seam copy

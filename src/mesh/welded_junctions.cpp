@@ -171,11 +171,9 @@ JunctionSolver::Front JunctionSolver::worstFront(std::size_t i) const {
     // Clearance margin × the smaller radius: a thin twig's ring may come as close to a thick
     // limb's ring as its own size allows, which keeps the joint tight.
     auto consider = [&](const Disc& d, double clearance, std::int32_t arm) {
-        const double cosine = p.normal.dot(d.normal);
-        const double front = (d.center - p.center).dot(p.normal) +
-                             d.radius * std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) +
+        const double front = reachInFront(p, d.center, d.normal, d.radius) +
                              clearance * std::min(d.radius, arms_[i].radius);
-        if (front > worst.front) worst = {front, arm >= 0 ? cosine : 0.0, arm};
+        if (front > worst.front) worst = {front, arm >= 0 ? p.normal.dot(d.normal) : 0.0, arm};
     };
     for (std::size_t j = 0; j < arms_.size(); ++j) {
         const RingPlace& q = arms_[j].place;

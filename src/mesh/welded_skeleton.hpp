@@ -76,6 +76,15 @@ RingPlace ringAtPoint(const WeldSkeleton& skeleton, const WeldLimb& limb, std::u
 /// reaches to within `clearance` × the smaller radius of the ring's plane (a bend sharper than
 /// the tube's radius folds the tube there anyway, and such a point would keep the ring from
 /// being a face of the hull), and points on the chord (kBeforeOffChord).
+/// How far a ring (centre, unit normal, radius) reaches in front of the plane of `ring`: its
+/// centre's height over the plane plus radius · sin of the angle between the two normals.
+inline double reachInFront(const RingPlace& ring, const Vec3& center, const Vec3& normal,
+                           double radius) {
+    const double cosine = ring.normal.dot(normal);
+    return (center - ring.center).dot(ring.normal) +
+           radius * std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+}
+
 /// Points within this fraction of their radius of the chord are left out by
 /// forEachPointBeforeRing.
 constexpr double kBeforeOffChord = 0.1;
@@ -100,9 +109,7 @@ void forEachPointBeforeRing(const WeldSkeleton& s, const WeldLimb& limb, bool fr
         const double along = std::clamp(off.dot(chord) / chord.squaredNorm(), 0.0, 1.0);
         if ((off - along * chord).norm() <= kBeforeOffChord * s.pointRadius[p]) continue;
         const Vec3 normal = pointDirection(s, limb, k);
-        const double cosine = ring.normal.dot(normal);
-        const double front = (s.pointPosition[p] - ring.center).dot(ring.normal) +
-                             s.pointRadius[p] * std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) +
+        const double front = reachInFront(ring, s.pointPosition[p], normal, s.pointRadius[p]) +
                              clearance * std::min(s.pointRadius[p], ring.radius);
         if (front < 0.0) visit(k, normal);
     }
