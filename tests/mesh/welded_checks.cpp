@@ -10,6 +10,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "ramus/colonize.hpp"
 #include "ramus/export.hpp"
 #include "ramus/lsystem.hpp"
 #include "ramus/scene.hpp"
@@ -305,6 +306,19 @@ BranchTree growLSystem(const std::string& file, int derivations) {
     options.derivations = derivations;
     const ModuleString word = deriveLSystem(system, options);
     return interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings)).tree;
+}
+
+void forEachColonizationTree(const std::function<void(const std::string&, const BranchTree&,
+                                                      const WeldedMeshParams&)>& visit) {
+    for (const std::string& file : exampleFiles("/examples/colonize", ".json")) {
+        const ColonizeConfig config = loadColonizeConfig(file);
+        const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
+        WeldedMeshParams params;
+        applyMeshOverrides(config, params.tube);
+        for (std::size_t t = 0; t < result.trees.size(); ++t) {
+            visit(stem(file) + "_" + std::to_string(t), result.trees[t], params);
+        }
+    }
 }
 
 void writeWeldedGlb(const Mesh& mesh, const std::string& name) {

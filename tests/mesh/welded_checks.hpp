@@ -6,12 +6,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "ramus/branch_tree.hpp"
 #include "ramus/mesh.hpp"
+#include "ramus/welded_mesher.hpp"
 
 namespace ramus::test {
 
@@ -100,6 +102,12 @@ std::string stem(const std::string& path);
 
 /// The tree the L-system file `file` grows at `derivations` (-1: the file's default).
 BranchTree growLSystem(const std::string& file, int derivations = -1);
+
+/// Calls visit(name, tree, params) for every tree of every colonization example
+/// (examples/colonize/*.json, sorted; name "<file stem>_<tree index>"), with the welded
+/// meshing parameters its config's `mesh` object sets.
+void forEachColonizationTree(const std::function<void(const std::string&, const BranchTree&,
+                                                      const WeldedMeshParams&)>& visit);
 
 /// Writes `mesh` as <$RAMUS_TEST_OUTPUT>/welded_<name>.glb when the variable is set.
 void writeWeldedGlb(const Mesh& mesh, const std::string& name);

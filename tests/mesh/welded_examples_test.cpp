@@ -230,21 +230,15 @@ std::size_t colonizationBranchesOutsideBound(const std::string& tree) {
 // a ball), inner rings far from a junction dropped as if they crossed its ring (a limb turning
 // by more than a right angle), and tips that fold back onto their parent's node (now junctions).
 TEST(WeldedExamples, EveryColonizationBranchIsInsideTheSurface) {
-    for (const std::string& file : exampleFiles("/examples/colonize", ".json")) {
-        const ColonizeConfig config = loadColonizeConfig(file);
-        const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
-        WeldedMeshParams params;
-        applyMeshOverrides(config, params.tube);
-        params.tube.curveReduction = 0.0;
-        for (std::size_t t = 0; t < result.trees.size(); ++t) {
-            SCOPED_TRACE(file);
-            const Mesh mesh = buildWeldedTreeMesh(result.trees[t], params);
-            const auto [outside, edges] = branchesOutside(result.trees[t], mesh);
-            const std::string tree = stem(file) + "_" + std::to_string(t);
-            std::printf("%s: %zu of %zu edge midpoints outside\n", tree.c_str(), outside, edges);
-            EXPECT_LE(outside, colonizationBranchesOutsideBound(tree));
-        }
-    }
+    test::forEachColonizationTree(
+        [](const std::string& name, const BranchTree& tree, const WeldedMeshParams& configured) {
+            SCOPED_TRACE(name);
+            WeldedMeshParams params = configured;
+            params.tube.curveReduction = 0.0;
+            const auto [outside, edges] = branchesOutside(tree, buildWeldedTreeMesh(tree, params));
+            std::printf("%s: %zu of %zu edge midpoints outside\n", name.c_str(), outside, edges);
+            EXPECT_LE(outside, colonizationBranchesOutsideBound(name));
+        });
 }
 
 // Triangle pairs that intersect with at least one junction triangle in them (the junctions
@@ -274,28 +268,21 @@ std::size_t junctionIntersectionBound(const std::string& tree) {
 }
 
 TEST(WeldedExamples, EveryColonizationExampleIsClosedGenusZeroSurfaces) {
-    for (const std::string& file : exampleFiles("/examples/colonize", ".json")) {
-        const ColonizeConfig config = loadColonizeConfig(file);
-        const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
-        WeldedMeshParams params;
-        applyMeshOverrides(config, params.tube);
-        for (std::size_t t = 0; t < result.trees.size(); ++t) {
-            const std::string tree = stem(file) + "_" + std::to_string(t);
-            Mesh mesh;
-            const WeldReport report =
-                expectClosedSurfaces(result.trees[t], params, "colonize_" + tree, &mesh);
-            SCOPED_TRACE(file);
-            const std::size_t crossed = junctionIntersections(mesh, report);
-            std::printf("%s: %zu junction triangle pairs intersect, %zu balls\n", tree.c_str(),
-                        crossed, report.nodeBalls);
-            EXPECT_LE(crossed, junctionIntersectionBound(tree)) << tree;
-            EXPECT_EQ(report.fallbacks, 0u);
-            EXPECT_EQ(report.crowded, 0u);
-            EXPECT_EQ(report.components, 1u);
-            // conifer: one limb near the base between two full junctions (16 branch nodes).
-            EXPECT_LE(report.crossings, 1u);
-        }
-    }
+    test::forEachColonizationTree([](const std::string& tree, const BranchTree& branches,
+                                     const WeldedMeshParams& params) {
+        SCOPED_TRACE(tree);
+        Mesh mesh;
+        const WeldReport report = expectClosedSurfaces(branches, params, "colonize_" + tree, &mesh);
+        const std::size_t crossed = junctionIntersections(mesh, report);
+        std::printf("%s: %zu junction triangle pairs intersect, %zu balls\n", tree.c_str(), crossed,
+                    report.nodeBalls);
+        EXPECT_LE(crossed, junctionIntersectionBound(tree));
+        EXPECT_EQ(report.fallbacks, 0u);
+        EXPECT_EQ(report.crowded, 0u);
+        EXPECT_EQ(report.components, 1u);
+        // conifer: one limb near the base between two full junctions (16 branch nodes).
+        EXPECT_LE(report.crossings, 1u);
+    });
 }
 
 TEST(WeldedExamples, SmallExamplesHaveNoSelfIntersections) {

@@ -132,9 +132,7 @@ TEST(WeldedMesh, ChildNearlyParallelToItsParentIsWelded) {
     tree.addChild(a, Vec3(0, 2, 0) + 4.0 * Vec3(std::sin(angle), std::cos(angle), 0));
     // The rings sit where the two tubes part; the hull bridges the waist between two touching
     // rings, up to about (√2 − 1)·r … 0.7·r outside the capsules.
-    Expect expect;
-    expect.outside = 0.75;
-    expectWelded(tree, segments(8, 12), "nearly_parallel", expect);
+    expectWelded(tree, segments(8, 12), "nearly_parallel", {.outside = 0.75});
 }
 
 TEST(WeldedMesh, ChildAtRightAnglesIsWelded) {
@@ -286,9 +284,7 @@ TEST(WeldedMesh, TipFoldingBackOntoItsBranchIsClosedOver) {
     WeldReport report;
     buildWeldedTreeMesh(tree, segments(8, 8), &report);
     EXPECT_EQ(report.junctions, 1u);
-    Expect expect;
-    expect.outside = 0.75;
-    expectWelded(tree, segments(8, 8), "tip_folds_back", expect);
+    expectWelded(tree, segments(8, 8), "tip_folds_back", {.outside = 0.75});
 }
 
 // Both children grow back along their parent (160° turns): every ring lies below the branch
@@ -303,9 +299,7 @@ TEST(WeldedMesh, BranchNodeWhoseChildrenFoldBackIsCovered) {
     const Mesh mesh = buildWeldedTreeMesh(tree, segments(8, 8), &report);
     EXPECT_EQ(report.nodeBalls, 1u);
     EXPECT_NEAR(test::windingNumber(mesh, Vec3(0, 3, 0)), 1.0, 1e-6);
-    Expect expect;
-    expect.outside = 0.75;
-    expectWelded(tree, segments(8, 8), "children_fold_back", expect);
+    expectWelded(tree, segments(8, 8), "children_fold_back", {.outside = 0.75});
 }
 
 TEST(WeldedMesh, EmptyAndRootOnlyTreesGiveEmptyMeshes) {

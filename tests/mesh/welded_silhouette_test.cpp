@@ -305,17 +305,11 @@ TEST(WeldedSilhouette, LSystemExamplesMatchTheTubeSilhouetteWithinBounds) {
 
 // Every tree of every colonization example, meshed with its config's settings.
 TEST(WeldedSilhouette, ColonizationTreesMatchTheTubeSilhouetteWithinBounds) {
-    for (const std::string& file : test::exampleFiles("/examples/colonize", ".json")) {
-        const ColonizeConfig config = loadColonizeConfig(file);
-        const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
-        WeldedMeshParams params;
-        applyMeshOverrides(config, params.tube);
-        for (std::size_t t = 0; t < result.trees.size(); ++t) {
-            const std::string name = test::stem(file) + "_" + std::to_string(t);
+    test::forEachColonizationTree(
+        [](const std::string& name, const BranchTree& tree, const WeldedMeshParams& params) {
             SCOPED_TRACE(name);
-            expectWithinBounds(compareSilhouettes(result.trees[t], params, name), name);
-        }
-    }
+            expectWithinBounds(compareSilhouettes(tree, params, name), name);
+        });
 }
 
 }  // namespace
