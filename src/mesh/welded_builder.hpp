@@ -44,6 +44,7 @@ private:
     void meshAbsorbedLimb(std::int32_t limb);
     void tubeAbsorbedLimb(std::int32_t limb);
     void emitPointsBeforeRings(std::int32_t limb);
+    double vFromNode(const WeldLimb& limb, bool fromEnd, std::uint32_t k, double v) const;
     double vAfterStep(std::uint32_t point, double v) const;
     WindSample windAt(const RingPlace& place) const;
     RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,

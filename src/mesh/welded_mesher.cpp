@@ -182,25 +182,32 @@ void WeldBuilder::emitPointsBeforeRings(std::int32_t l) {
         const NodeId node = atEnd ? limb.endKey : limb.startKey;
         if (junctions_.cluster[static_cast<std::size_t>(node)] >= 0) {
             const double t = atEnd ? junctions_.endOffset[li] : junctions_.startOffset[li];
-            double v = keyV_[static_cast<std::size_t>(node)];
-            std::uint32_t previous = atEnd ? limb.count - 1 : 0;
             const RingPlace ring = ringOnLimb(s, limb, atEnd, t);
-            forEachPointBeforeRing(s, limb, atEnd, t, ring, kBeforeClearance * margin_,
-                                   [&](std::uint32_t k, const Vec3&) {
-                                       // The step between points k and `previous` (neighbours), ≤ 0
-                                       // along the limb.
-                                       const double dv =
-                                           vAfterStep(limb.first + std::max(k, previous), 0.0);
-                                       v += atEnd ? -dv : dv;
-                                       previous = k;
-                                       const RingPlace place = ringAtPoint(s, limb, k);
-                                       before_.push_back(emitRing(
-                                           place, initialReference(place.normal),
-                                           static_cast<float>(v), limb.segments, windAt(place)));
-                                   });
+            const double v = keyV_[static_cast<std::size_t>(node)];
+            forEachPointBeforeRing(
+                s, limb, atEnd, t, ring, kBeforeClearance * margin_,
+                [&](std::uint32_t k, const Vec3&) {
+                    const RingPlace place = ringAtPoint(s, limb, k);
+                    const auto vk = static_cast<float>(vFromNode(limb, atEnd, k, v));
+                    before_.push_back(emitRing(place, initialReference(place.normal), vk,
+                                               limb.segments, windAt(place)));
+                });
         }
         beforeFirst_[2 * li + (atEnd ? 1 : 0) + 1] = static_cast<std::uint32_t>(before_.size());
     }
+}
+
+// Texture v at point k of `limb`, from v at its start node (or its end node, `fromEnd`):
+// the steps of vAfterStep between them (v falls along the limb).
+double WeldBuilder::vFromNode(const WeldLimb& limb, bool fromEnd, std::uint32_t k, double v) const {
+    if (!fromEnd) {
+        for (std::uint32_t i = 1; i <= k; ++i) v = vAfterStep(limb.first + i, v);
+        return v;
+    }
+    for (std::uint32_t i = limb.count - 1; i > k; --i) {
+        v += v - vAfterStep(limb.first + i, v);  // towards the start v rises by the same steps
+    }
+    return v;
 }
 
 // A limb inside a junction: one ring per point, as hull points only.

@@ -67,15 +67,6 @@ Vec3 pointDirection(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uin
 /// point's node (k = 0: the start of the limb's first edge), as buildTubeMesh's ring there.
 RingPlace ringAtPoint(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uint32_t k);
 
-/// Calls visit(k) for the inner points k of `limb` that lie between its start node (or its end
-/// node, `fromEnd`) and the junction ring `ring` (ringOnLimb at arc length `t` from that node,
-/// normal away from the node), from the node outwards: a junction's hull spans these points
-/// instead of a tube, and where the limb bends there their rings must be hull points, or the
-/// hull cuts the bend off along the chord from the node to the ring. Points within 5 % of
-/// their radius of the ring are left out (the ring covers them), and so are points whose ring
-/// reaches to within `clearance` × the smaller radius of the ring's plane (a bend sharper than
-/// the tube's radius folds the tube there anyway, and such a point would keep the ring from
-/// being a face of the hull), and points on the chord (kBeforeOffChord).
 /// How far a ring (centre, unit normal, radius) reaches in front of the plane of `ring`: its
 /// centre's height over the plane plus radius · sin of the angle between the two normals.
 inline double reachInFront(const RingPlace& ring, const Vec3& center, const Vec3& normal,
@@ -92,6 +83,15 @@ constexpr double kBeforeOffChord = 0.1;
 /// the hull's apex lift (2e-4 of the margin), so the ring stays a face of the hull.
 constexpr double kBeforeClearance = 0.25;
 
+/// Calls visit(k) for the inner points k of `limb` that lie between its start node (or its end
+/// node, `fromEnd`) and the junction ring `ring` (ringOnLimb at arc length `t` from that node,
+/// normal away from the node), from the node outwards: a junction's hull spans these points
+/// instead of a tube, and where the limb bends there their rings must be hull points, or the
+/// hull cuts the bend off along the chord from the node to the ring. Points within 5 % of
+/// their radius of the ring are left out (the ring covers them), and so are points whose ring
+/// reaches to within `clearance` × the smaller radius of the ring's plane (a bend sharper than
+/// the tube's radius folds the tube there anyway, and such a point would keep the ring from
+/// being a face of the hull), and points on the chord (kBeforeOffChord).
 template <class Visit>
 void forEachPointBeforeRing(const WeldSkeleton& s, const WeldLimb& limb, bool fromEnd, double t,
                             const RingPlace& ring, double clearance, Visit visit) {
@@ -106,7 +106,8 @@ void forEachPointBeforeRing(const WeldSkeleton& s, const WeldLimb& limb, bool fr
         const Vec3& node = s.pointPosition[fromEnd ? limb.first + limb.count - 1 : limb.first];
         const Vec3 chord = ring.center - node;
         const Vec3 off = s.pointPosition[p] - node;
-        const double along = std::clamp(off.dot(chord) / chord.squaredNorm(), 0.0, 1.0);
+        const double chord2 = chord.squaredNorm();
+        const double along = chord2 > 0.0 ? std::clamp(off.dot(chord) / chord2, 0.0, 1.0) : 0.0;
         if ((off - along * chord).norm() <= kBeforeOffChord * s.pointRadius[p]) continue;
         const Vec3 normal = pointDirection(s, limb, k);
         const double front = reachInFront(ring, s.pointPosition[p], normal, s.pointRadius[p]) +
