@@ -7,6 +7,7 @@
 # the corpus size at the end; the full logs stay in BUILD_DIR/fuzz-logs/.
 #
 # Usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]   (TARGET: e.g. lsystem; default all)
+# FUZZ_JOBS=N runs up to N targets at once (default 1), each for SECONDS.
 set -euo pipefail
 
 if [[ $# -lt 2 ]]; then
@@ -49,7 +50,10 @@ trap 'rm -rf "$work"' EXIT
 status=0
 logs="$build/fuzz-logs"
 mkdir -p "$logs"
-for bin in "${targets[@]}"; do
+# Fuzzes one target; prints its summary line, or the end of its log on failure (returns 1).
+fuzz_one() {
+    local bin=$1
+    local name corpusName seeds corpus artifacts log runs last cov ft corp
     name=$(basename "$bin")
     corpusName=${name#fuzz_}
     seeds="$root/fuzz/corpus/$corpusName"
@@ -63,23 +67,37 @@ for bin in "${targets[@]}"; do
     fi
     log="$logs/$name.log"
     echo "fuzz.sh: $name for ${seconds}s (seeds: fuzz/corpus/$corpusName)"
-    if "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    if ! "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
         -artifact_prefix="$artifacts/" -print_final_stats=1 "$corpus" >"$log" 2>&1; then
-        runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
-        # The last status line, e.g. "#123456 DONE cov: 1234 ft: 5678 corp: 321/45Kb ...".
-        last=$(grep -E '^#[0-9]+' "$log" | tail -n 1 || true)
-        cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
-        ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
-        corp=$(sed -n 's/.* corp: \([0-9]*\/[0-9A-Za-z]*\).*/\1/p' <<<"$last")
-        echo "fuzz.sh: $name ok (${runs:-?} inputs, cov ${cov:-?}, ft ${ft:-?}," \
-            "corpus ${corp:-?}; log $log)"
-    else
-        status=1
         echo "fuzz.sh: $name FAILED; end of its log:" >&2
         tail -n 60 "$log" >&2
         mkdir -p "$build/fuzz-artifacts"
         cp "$artifacts"/* "$build/fuzz-artifacts/" 2>/dev/null || true
         echo "fuzz.sh: failing inputs copied to $build/fuzz-artifacts/" >&2
+        return 1
     fi
+    runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
+    # The last status line, e.g. "#123456 DONE cov: 1234 ft: 5678 corp: 321/45Kb ...".
+    last=$(grep -E '^#[0-9]+' "$log" | tail -n 1 || true)
+    cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
+    ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
+    corp=$(sed -n 's/.* corp: \([0-9]*\/[0-9A-Za-z]*\).*/\1/p' <<<"$last")
+    echo "fuzz.sh: $name ok (${runs:-?} inputs, cov ${cov:-?}, ft ${ft:-?}," \
+        "corpus ${corp:-?}; log $log)"
+}
+
+jobs=${FUZZ_JOBS:-1}
+if ! [[ $jobs =~ ^[1-9][0-9]*$ ]]; then
+    echo "fuzz.sh: FUZZ_JOBS must be a positive whole number, got '$jobs'" >&2
+    exit 2
+fi
+pids=()
+for bin in "${targets[@]}"; do
+    while [[ $(jobs -rp | wc -l) -ge $jobs ]]; do sleep 0.2; done
+    fuzz_one "$bin" &
+    pids+=("$!")
+done
+for pid in "${pids[@]}"; do
+    wait "$pid" || status=1
 done
 exit $status

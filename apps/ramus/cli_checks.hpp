@@ -1,11 +1,16 @@
 // CLI11 validators shared by the subcommands: numbers must be finite (CLI11's own range checks
-// let NaN through, since every comparison with it is false, and print infinities badly).
+// let NaN through, since every comparison with it is false, and print infinities badly); and
+// the `--seed` text of the tree commands.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <exception>
 #include <string>
+
+#include "ramus/error.hpp"
 
 namespace ramus::cli {
 
@@ -36,5 +41,20 @@ inline CLI::Validator finiteIn(double lo, double hi) {
 
 /// Largest magnitude accepted where a flag has no natural bound.
 inline constexpr double kHugeNumber = 1e300;
+
+/// `--seed`: a non-negative whole number that fits 64 bits.
+inline std::uint64_t parseSeed(const std::string& text) {
+    std::size_t used = 0;
+    unsigned long long value = 0;
+    try {
+        value = std::stoull(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || text[0] == '-') {
+        throw Error("--seed: invalid seed '" + text + "'; expected a non-negative integer");
+    }
+    return value;
+}
 
 }  // namespace ramus::cli

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "ramus/colonize.hpp"
 #include "ramus/error.hpp"
@@ -33,20 +34,6 @@ struct ColonizeOptions {
     AssetOptions assets;
     CLI::App* command = nullptr;
 };
-
-std::uint64_t parseSeed(const std::string& text) {
-    std::size_t used = 0;
-    unsigned long long value = 0;
-    try {
-        value = std::stoull(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || text[0] == '-') {
-        throw Error("--seed: invalid seed '" + text + "'; expected a non-negative integer");
-    }
-    return value;
-}
 
 // Mesher settings: defaults, then the config's "mesh" object, then the flags given.
 TubeMeshParams meshParams(const ColonizeOptions& o, const ColonizeConfig& config) {

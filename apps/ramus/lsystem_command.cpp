@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "ramus/error.hpp"
 #include "ramus/lsystem.hpp"
@@ -54,20 +55,6 @@ std::pair<std::string, double> parseSetting(const std::string& text) {
         throw Error("--set: the value of '" + text + "' is not finite; expected a finite number");
     }
     return {text.substr(0, eq), value};
-}
-
-std::uint64_t parseSeed(const std::string& text) {
-    std::size_t used = 0;
-    unsigned long long value = 0;
-    try {
-        value = std::stoull(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || text[0] == '-') {
-        throw Error("--seed: invalid seed '" + text + "'; expected a non-negative integer");
-    }
-    return value;
 }
 
 void run(LsystemOptions& o) {

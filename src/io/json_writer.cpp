@@ -42,7 +42,7 @@ bool plainAscii(unsigned char c) { return c >= 0x20 && c < 0x80 && c != '"' && c
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool isJsonSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 int hexValue(char c) {
     if (isDigit(c)) return c - '0';
@@ -83,7 +83,7 @@ private:
     }
     void skipSpace() {
         const std::size_t start = i_;
-        while (isSpace(s_[i_])) ++i_;
+        while (isJsonSpace(s_[i_])) ++i_;
         hadSpace_ = hadSpace_ || i_ != start;
     }
     void scanLiteral(std::string_view word) {
@@ -237,7 +237,7 @@ void appendWithoutSpace(std::string& out, std::string_view text) {
             } else if (c == '"') {
                 inString = false;
             }
-        } else if (!isSpace(c)) {
+        } else if (!isJsonSpace(c)) {
             out += c;
             inString = c == '"';
         }

@@ -12,7 +12,7 @@ namespace ramus::io {
 
 namespace {
 
-bool isSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+bool isObjSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
 
 // Whitespace-separated tokens of a line, with their 1-based columns.
 struct Token {
@@ -24,9 +24,9 @@ std::vector<Token> tokenize(std::string_view line) {
     std::vector<Token> tokens;
     std::size_t i = 0;
     while (i < line.size()) {
-        while (i < line.size() && isSpace(line[i])) ++i;
+        while (i < line.size() && isObjSpace(line[i])) ++i;
         const std::size_t start = i;
-        while (i < line.size() && !isSpace(line[i])) ++i;
+        while (i < line.size() && !isObjSpace(line[i])) ++i;
         if (i > start)
             tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
     }

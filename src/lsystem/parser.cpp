@@ -13,8 +13,6 @@
 namespace ramus::detail {
 namespace {
 
-constexpr std::size_t kNpos = std::string_view::npos;
-
 /// The production arrow `->`, `-->` or `→` at parenthesis depth 0: {offset, length}, or npos.
 std::pair<std::size_t, std::size_t> findArrow(std::string_view text) {
     int depth = 0;

@@ -8,8 +8,6 @@
 namespace ramus::detail {
 namespace {
 
-constexpr std::size_t kNpos = std::string_view::npos;
-
 /// First `c` in text[begin, end) outside parentheses, or npos.
 std::size_t findTopLevel(std::string_view text, std::size_t begin, std::size_t end, char c) {
     int depth = 0;

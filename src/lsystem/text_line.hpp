@@ -23,6 +23,9 @@ struct TextLine {
     [[noreturn]] void fail(std::size_t offset, const std::string& message) const;
 };
 
+/// std::string_view::npos, short.
+inline constexpr std::size_t kNpos = std::string_view::npos;
+
 inline bool isSpaceChar(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }

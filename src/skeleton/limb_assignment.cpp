@@ -170,7 +170,8 @@ void varyAttachment(LimbLayout& layout, const Allowed& allowed, Attachment chose
         for (LimbKind kind : kLimbKinds) {
             if (attachmentAccepts(chosen, kind)) fitting.push_back(kind);
         }
-        layout[at(chosen)] = fitting[static_cast<std::size_t>(kindDraw * fitting.size())];
+        layout[at(chosen)] =
+            fitting[static_cast<std::size_t>(kindDraw * static_cast<double>(fitting.size()))];
         return;
     }
     layout[at(chosen)] = LimbKind::None;
@@ -184,7 +185,8 @@ void varyAttachment(LimbLayout& layout, const Allowed& allowed, Attachment chose
         }
     }
     if (targets.empty()) return;
-    layout[at(targets[static_cast<std::size_t>(placeDraw * targets.size())])] = current;
+    layout[at(targets[static_cast<std::size_t>(placeDraw * static_cast<double>(targets.size()))])] =
+        current;
 }
 
 }  // namespace

@@ -58,10 +58,10 @@ namespace {
 
 constexpr int kMaxDepth = 256;
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool isXmlSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 bool isNameChar(char c) {
-    return !isSpace(c) && c != '=' && c != '>' && c != '/' && c != '<' && c != '"' && c != '\'' &&
-           c != '\0';
+    return !isXmlSpace(c) && c != '=' && c != '>' && c != '/' && c != '<' && c != '"' &&
+           c != '\'' && c != '\0';
 }
 
 void appendUtf8(std::string& out, std::uint32_t cp) {
@@ -213,7 +213,7 @@ private:
     }
 
     void skipSpace() {
-        while (pos_ < text_.size() && isSpace(text_[pos_])) ++pos_;
+        while (pos_ < text_.size() && isXmlSpace(text_[pos_])) ++pos_;
     }
 
     void endTag() {

@@ -14,6 +14,14 @@
 
 namespace ramus::testing {
 
+/// Writes `text` to `dir`/`name` (atomically) and returns that path.
+inline std::filesystem::path writeInput(const std::filesystem::path& dir, const std::string& name,
+                                        const std::string& text) {
+    const std::filesystem::path path = dir / name;
+    writeFileAtomic(path.string(), text);
+    return path;
+}
+
 struct CommandResult {
     int exitCode = -1;
     std::string out;

@@ -16,12 +16,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path writeInput(const fs::path& dir, const std::string& name, const std::string& text) {
-    const fs::path path = dir / name;
-    writeFileAtomic(path.string(), text);
-    return path;
-}
-
 std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 // --- ramus lsystem ---

@@ -24,12 +24,6 @@ const char* kStochastic =
     "F -> F[+F]F : 1\n"
     "F -> F[-F]F : 1\n";
 
-fs::path writeInput(const fs::path& dir, const std::string& name, const std::string& text) {
-    const fs::path path = dir / name;
-    writeFileAtomic(path.string(), text);
-    return path;
-}
-
 TEST(LsystemCli, WritesEveryRequestedOutputAndPrintsStats) {
     const fs::path dir = scratchDirectory("outputs");
     const fs::path input = writeInput(dir, "tree.lsys", kTree);

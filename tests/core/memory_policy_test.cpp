@@ -9,6 +9,15 @@
 #include <sys/resource.h>
 #endif
 
+// GCC defines __SANITIZE_ADDRESS__ under AddressSanitizer, clang answers __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define RAMUS_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RAMUS_TEST_ASAN 1
+#endif
+#endif
+
 namespace ramus {
 namespace {
 
@@ -34,7 +43,7 @@ long faultsOfOneLargeBlock() {
 // The second item of a batch reuses the first one's freed memory instead of faulting every
 // page in again (4096 pages of 4 KiB here).
 TEST(MemoryPolicy, ASecondLargeBlockReusesTheFreedMemory) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RAMUS_TEST_ASAN)
     GTEST_SKIP() << "AddressSanitizer brings its own allocator; glibc's tuning does not apply";
 #endif
     keepFreedMemoryForReuse();

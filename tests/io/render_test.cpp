@@ -21,13 +21,13 @@ struct Rgba {
     int r, g, b, a;
 };
 
-Rgba pixel(const Image& image, int x, int y) {
+Rgba rgbaAt(const Image& image, int x, int y) {
     const std::uint8_t* p = image.rgba.data() + (static_cast<std::size_t>(y) * image.width + x) * 4;
     return {p[0], p[1], p[2], p[3]};
 }
 
 bool isWhite(const Image& image, int x, int y) {
-    const Rgba p = pixel(image, x, y);
+    const Rgba p = rgbaAt(image, x, y);
     return p.r == 255 && p.g == 255 && p.b == 255 && p.a == 255;
 }
 
@@ -92,7 +92,7 @@ TEST(Render, CubeCoversTheMiddleAndLeavesTheCornersBackground) {
     ASSERT_EQ(image.height, 64);
     ASSERT_EQ(image.rgba.size(), 64u * 64u * 4u);
     EXPECT_FALSE(isWhite(image, 32, 32));
-    EXPECT_EQ(pixel(image, 32, 32).a, 255);
+    EXPECT_EQ(rgbaAt(image, 32, 32).a, 255);
     for (auto [x, y] : {std::pair{0, 0}, {63, 0}, {0, 63}, {63, 63}}) {
         EXPECT_TRUE(isWhite(image, x, y)) << x << "," << y;
     }
@@ -103,7 +103,7 @@ TEST(Render, FaceTowardTheCameraHasTheLitBaseColour) {
     // + 0.75·0.6046 (key) + 0.2·0.7035 (fill) = 0.7941; 0.8 · 0.7941 = 0.6353 linear
     // → sRGB 1.055·0.6353^(1/2.4) − 0.055 = 0.8183 → 209.
     const Image image = render(makeSingleMeshScene(makeCube()), View::Front, 64);
-    const Rgba p = pixel(image, 32, 32);
+    const Rgba p = rgbaAt(image, 32, 32);
     EXPECT_NEAR(p.r, 209, 1);
     EXPECT_EQ(p.r, p.g);
     EXPECT_EQ(p.g, p.b);
@@ -112,7 +112,7 @@ TEST(Render, FaceTowardTheCameraHasTheLitBaseColour) {
 TEST(Render, MaterialColourShowsInThePixels) {
     Mesh cube = makeCube();
     cube.materials = {Material{"red", {0.9f, 0.05f, 0.05f, 1.0f}}};
-    const Rgba p = pixel(render(makeSingleMeshScene(cube), View::ThreeQuarter, 64), 32, 32);
+    const Rgba p = rgbaAt(render(makeSingleMeshScene(cube), View::ThreeQuarter, 64), 32, 32);
     EXPECT_GT(p.r, 150);
     EXPECT_LT(p.g, 100);
     EXPECT_LT(p.b, 100);
@@ -206,10 +206,10 @@ TEST(Render, SharedEdgesLeaveNoCracks) {
     }
     const Image image = render(makeSingleMeshScene(grid), View::Front, 101);
     const Coverage c = coverage(image);
-    const Rgba centre = pixel(image, 50, 50);
+    const Rgba centre = rgbaAt(image, 50, 50);
     for (int y = c.top + 1; y < c.bottom; ++y) {
         for (int x = c.left + 1; x < c.right; ++x) {
-            const Rgba p = pixel(image, x, y);
+            const Rgba p = rgbaAt(image, x, y);
             ASSERT_EQ(p.r, centre.r) << x << "," << y;
             ASSERT_EQ(p.a, 255) << x << "," << y;
         }

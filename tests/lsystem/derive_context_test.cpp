@@ -3,17 +3,13 @@
 
 #include <string>
 
+#include "lsystem/derive_text.hpp"
 #include "ramus/lsystem.hpp"
 
 namespace ramus {
 namespace {
 
-std::string derive(const std::string& text, int derivations) {
-    LSystem s = parseLSystem(text, "c.lsys");
-    DeriveOptions o;
-    o.derivations = derivations;
-    return formatModules(s.symbols, deriveLSystem(s, o));
-}
+using test::derive;
 
 TEST(LSystemContext, SignalPropagatesOneModulePerStep) {
     // ABOP eq. 1.8 (p. 31): ω: baaaaaaaa, b < a -> b, b -> a.

@@ -6,20 +6,16 @@
 #include <cmath>
 #include <string>
 
+#include "lsystem/derive_text.hpp"
 #include "ramus/error.hpp"
 #include "ramus/lsystem.hpp"
 
 namespace ramus {
 namespace {
 
-using ::testing::HasSubstr;
+using test::derive;
 
-std::string derive(const std::string& text, int derivations = -1) {
-    LSystem s = parseLSystem(text, "d.lsys");
-    DeriveOptions o;
-    o.derivations = derivations;
-    return formatModules(s.symbols, deriveLSystem(s, o));
-}
+using ::testing::HasSubstr;
 
 std::string deriveError(const std::string& text, const DeriveOptions& o = {}) {
     try {

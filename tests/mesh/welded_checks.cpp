@@ -205,6 +205,58 @@ std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit,
     return found;
 }
 
+namespace {
+std::uint64_t planeCellKey(long y, long z) {
+    return static_cast<std::uint64_t>(y) << 32 ^ static_cast<std::uint32_t>(z);
+}
+}  // namespace
+
+RayWinding::RayWinding(const Mesh& mesh)
+    : turn_(Eigen::AngleAxisd(0.7, Vec3(0.3, 0.5, 0.81).normalized()).toRotationMatrix()) {
+    points_.reserve(mesh.positions.size());
+    for (const Vec3f& p : mesh.positions) points_.push_back(turn_ * p.cast<double>());
+    indices_ = mesh.indices;
+    Aabb box;
+    for (const Vec3& p : points_) box.add(p);
+    lo_ = box.min;
+    cell_ = std::max(box.extent().maxCoeff() / 256.0, 1e-9);
+    for (std::size_t t = 0; t < indices_.size() / 3; ++t) {
+        Aabb tri;
+        for (int k = 0; k < 3; ++k) tri.add(corner(t, k));
+        const auto [y0, z0] = cellOf(tri.min);
+        const auto [y1, z1] = cellOf(tri.max);
+        for (long y = y0; y <= y1; ++y)
+            for (long z = z0; z <= z1; ++z) cells_[planeCellKey(y, z)].push_back(t);
+    }
+}
+
+int RayWinding::at(const Vec3& point, int sign) const {
+    const Vec3 p = turn_ * point;
+    const auto [y, z] = cellOf(p);
+    const auto found = cells_.find(planeCellKey(y, z));
+    if (found == cells_.end()) return 0;
+    int winding = 0;
+    for (std::size_t t : found->second) {
+        const Vec3 a = corner(t, 0) - p, b = corner(t, 1) - p, c = corner(t, 2) - p;
+        // Where the ray's line meets the plane of (a, b, c) inside the triangle, by the
+        // signs of the (y, z) edge functions; the crossing's x decides the ray's side.
+        const double ea = b.y() * c.z() - b.z() * c.y();
+        const double eb = c.y() * a.z() - c.z() * a.y();
+        const double ec = a.y() * b.z() - a.z() * b.y();
+        if (!((ea > 0 && eb > 0 && ec > 0) || (ea < 0 && eb < 0 && ec < 0))) continue;
+        const double x = (ea * a.x() + eb * b.x() + ec * c.x()) / (ea + eb + ec);
+        if (x * sign <= 0) continue;
+        const double normalX = (b - a).cross(c - a).x();
+        winding += (normalX * sign > 0) ? 1 : -1;
+    }
+    return winding;
+}
+
+std::pair<long, long> RayWinding::cellOf(const Vec3& p) const {
+    return {static_cast<long>(std::floor((p.y() - lo_.y()) / cell_)),
+            static_cast<long>(std::floor((p.z() - lo_.z()) / cell_))};
+}
+
 std::vector<Capsule> branchCapsules(const BranchTree& tree, const std::vector<double>& radii,
                                     double rootRadius) {
     std::vector<Capsule> capsules;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -52,6 +53,28 @@ double worstNormalLength(const Mesh& mesh);
 std::size_t countSelfIntersections(
     const Mesh& mesh, std::size_t limit = 10,
     std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr);
+
+/// Signed crossings of rays along ±d from a point with the triangles (+1 where the ray leaves a
+/// surface): the winding number of closed outward surfaces there, overlapping ones summed. d is
+/// an oblique direction (no plane of a flat plant holds it, so rays do not run along ring
+/// edges); in a frame whose x is d the triangles are binned by their (y, z) bounds, so a ray
+/// meets only those of its cell.
+class RayWinding {
+public:
+    explicit RayWinding(const Mesh& mesh);
+    /// Crossings of the ray from `point` along +d (`sign` = 1) or −d (−1).
+    int at(const Vec3& point, int sign) const;
+
+private:
+    const Vec3& corner(std::size_t t, int k) const { return points_[indices_[3 * t + k]]; }
+    std::pair<long, long> cellOf(const Vec3& p) const;
+    Mat3 turn_;
+    std::vector<Vec3> points_;
+    std::vector<std::uint32_t> indices_;
+    Vec3 lo_;
+    double cell_ = 1.0;
+    std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
+};
 
 /// The tapered capsule of a drawn edge: the round cone (convex hull of two spheres) from the
 /// parent's position `a` (radius `ra`) to the node's `b` (radius `rb`).

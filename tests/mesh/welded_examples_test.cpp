@@ -114,76 +114,10 @@ TEST(WeldedExamples, DenseLSystemExamplesStillMeshAndReportTheirCompromises) {
     }
 }
 
-// Signed crossings of rays along ±d from a point with the triangles (+1 where the ray leaves a
-// surface): the winding number of closed outward surfaces there, overlapping ones summed. d is
-// an oblique direction (no plane of a flat plant holds it, so rays do not run along ring
-// edges); in a frame whose x is d the triangles are binned by their (y, z) bounds, so a ray
-// meets only those of its cell.
-class RayWinding {
-public:
-    explicit RayWinding(const Mesh& mesh)
-        : turn_(Eigen::AngleAxisd(0.7, Vec3(0.3, 0.5, 0.81).normalized()).toRotationMatrix()) {
-        points_.reserve(mesh.positions.size());
-        for (const Vec3f& p : mesh.positions) points_.push_back(turn_ * p.cast<double>());
-        indices_ = mesh.indices;
-        Aabb box;
-        for (const Vec3& p : points_) box.add(p);
-        lo_ = box.min;
-        cell_ = std::max(box.extent().maxCoeff() / 256.0, 1e-9);
-        for (std::size_t t = 0; t < indices_.size() / 3; ++t) {
-            Aabb tri;
-            for (int k = 0; k < 3; ++k) tri.add(corner(t, k));
-            const auto [y0, z0] = cellOf(tri.min);
-            const auto [y1, z1] = cellOf(tri.max);
-            for (long y = y0; y <= y1; ++y)
-                for (long z = z0; z <= z1; ++z) cells_[key(y, z)].push_back(t);
-        }
-    }
-
-    // Crossings of the ray from `point` along +d (`sign` = 1) or −d (−1).
-    int at(const Vec3& point, int sign) const {
-        const Vec3 p = turn_ * point;
-        const auto [y, z] = cellOf(p);
-        const auto found = cells_.find(key(y, z));
-        if (found == cells_.end()) return 0;
-        int winding = 0;
-        for (std::size_t t : found->second) {
-            const Vec3 a = corner(t, 0) - p, b = corner(t, 1) - p, c = corner(t, 2) - p;
-            // Where the ray's line meets the plane of (a, b, c) inside the triangle, by the
-            // signs of the (y, z) edge functions; the crossing's x decides the ray's side.
-            const double ea = b.y() * c.z() - b.z() * c.y();
-            const double eb = c.y() * a.z() - c.z() * a.y();
-            const double ec = a.y() * b.z() - a.z() * b.y();
-            if (!((ea > 0 && eb > 0 && ec > 0) || (ea < 0 && eb < 0 && ec < 0))) continue;
-            const double x = (ea * a.x() + eb * b.x() + ec * c.x()) / (ea + eb + ec);
-            if (x * sign <= 0) continue;
-            const double normalX = (b - a).cross(c - a).x();
-            winding += (normalX * sign > 0) ? 1 : -1;
-        }
-        return winding;
-    }
-
-private:
-    const Vec3& corner(std::size_t t, int k) const { return points_[indices_[3 * t + k]]; }
-    std::pair<long, long> cellOf(const Vec3& p) const {
-        return {static_cast<long>(std::floor((p.y() - lo_.y()) / cell_)),
-                static_cast<long>(std::floor((p.z() - lo_.z()) / cell_))};
-    }
-    static std::uint64_t key(long y, long z) {
-        return static_cast<std::uint64_t>(y) << 32 ^ static_cast<std::uint32_t>(z);
-    }
-    Mat3 turn_;
-    std::vector<Vec3> points_;
-    std::vector<std::uint32_t> indices_;
-    Vec3 lo_;
-    double cell_ = 1.0;
-    std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
-};
-
 // Midpoints of the drawn edges of `tree` that are not inside `mesh` (rays both ways agree on
 // a winding number ≥ 1), and how many were tested.
 std::pair<std::size_t, std::size_t> branchesOutside(const BranchTree& tree, const Mesh& mesh) {
-    const RayWinding winding(mesh);
+    const test::RayWinding winding(mesh);
     std::size_t outside = 0, edges = 0;
     for (std::size_t v = 1; v < tree.size(); ++v) {
         const BranchNode& node = tree.node(static_cast<NodeId>(v));

@@ -9,14 +9,12 @@
 
 #include "ramus/skeleton_stats.hpp"
 #include "skeleton/skeleton_build.hpp"
+#include "skeleton/thesis_model.hpp"
 
 namespace ramus::detail {
 namespace {
 
-const SkeletonStats& thesisModel() {
-    static const SkeletonStats stats = SkeletonStats::builtin();
-    return stats;
-}
+using test::thesisModel;
 
 SkeletonDesign designOf(const std::string& species) {
     SkeletonDesign d;

@@ -7,14 +7,12 @@
 #include <cmath>
 
 #include "ramus/error.hpp"
+#include "skeleton/thesis_model.hpp"
 
 namespace ramus {
 namespace {
 
-const SkeletonStats& thesisModel() {
-    static const SkeletonStats stats = SkeletonStats::builtin();
-    return stats;
-}
+using test::thesisModel;
 
 TEST(SkeletonStats, BuiltinDataHas44SpeciesAnd29Dimensions) {
     const SkeletonStats& s = thesisModel();

@@ -6,14 +6,12 @@
 
 #include "ramus/skeleton_stats.hpp"
 #include "skeleton/skeleton_build.hpp"
+#include "skeleton/thesis_model.hpp"
 
 namespace ramus::detail {
 namespace {
 
-const SkeletonStats& thesisModel() {
-    static const SkeletonStats stats = SkeletonStats::builtin();
-    return stats;
-}
+using test::thesisModel;
 
 // A spine whose back is the given cubic; neck and tail collapse onto P3 and P6.
 Spine backOnly(const Vec2& p0, const Vec2& p1, const Vec2& p2, const Vec2& p3) {

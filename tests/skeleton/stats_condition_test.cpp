@@ -8,14 +8,12 @@
 
 #include "ramus/error.hpp"
 #include "ramus/skeleton_stats.hpp"
+#include "skeleton/thesis_model.hpp"
 
 namespace ramus {
 namespace {
 
-const SkeletonStats& thesisModel() {
-    static const SkeletonStats stats = SkeletonStats::builtin();
-    return stats;
-}
+using test::thesisModel;
 
 // The least-squares slope of feature j on feature k over the species, computed from the data
 // directly (not from the model's covariance matrix).
