@@ -48,7 +48,7 @@ test: deps format-check check-tests studio-e2e validate three-load blender-impor
 # 13 s under ASan) once per shard for little gain.
 TEST_SHARDS ?= $(shell echo $$(( $(JOBS) * 2 )))
 CHECK_FLAGS := -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRAMUS_SANITIZE=ON \
-               -DRAMUS_ENABLE_ASSERTS=ON -DRAMUS_BUILD_BENCH=OFF
+               -DRAMUS_ENABLE_ASSERTS=ON -DRAMUS_BUILD_BENCH=OFF -DRAMUS_UNITY_BUILD=ON
 check-tests: deps
 	@cmake -S . -B $(CHECK) $(CMAKE_GEN) $(CHECK_FLAGS) >/dev/null
 	@cmake --build $(CHECK) -j $(JOBS) --target ramus ramus_tests
@@ -107,7 +107,7 @@ FUZZ      ?= build/fuzz
 FUZZ_SECS ?= 600
 fuzz-build: deps
 	@CXX=clang++ cmake -S . -B $(FUZZ) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" \
-	  -DRAMUS_BUILD_FUZZ=ON -DRAMUS_BUILD_TESTS=OFF -DRAMUS_BUILD_BENCH=OFF >/dev/null
+	  -DRAMUS_BUILD_FUZZ=ON -DRAMUS_BUILD_TESTS=OFF -DRAMUS_BUILD_BENCH=OFF -DRAMUS_UNITY_BUILD=ON >/dev/null
 	@cmake --build $(FUZZ) -j $(JOBS) --target fuzzers
 
 fuzz: fuzz-build

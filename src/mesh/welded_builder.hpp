@@ -62,7 +62,6 @@ private:
     void fallbackJunction();
     std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
 
-    const BranchTree& tree_;
     const WeldedMeshParams& params_;
     WeldSkeleton skeleton_;
     WeldJunctions junctions_;

@@ -55,8 +55,7 @@ bool ringsApart(const RingPlace& a, const RingPlace& b) {
 
 }  // namespace
 
-WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
-    : tree_(tree), params_(params) {
+WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params) : params_(params) {
     margin_ =
         std::isfinite(params.junctionMargin) ? std::clamp(params.junctionMargin, 0.01, 1.0) : 0.05;
     const double aspect = params.tube.uvAspect > 0.0 && std::isfinite(params.tube.uvAspect)
