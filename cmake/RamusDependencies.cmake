@@ -6,9 +6,12 @@ find_package(CLI11 2.1 REQUIRED)
 find_package(fmt 9 REQUIRED)
 # CGAL (Debian libcgal-dev, header-only, with GMP/MPFR): its Polygon Mesh Processing
 # autorefinement resolves the intersections for the solid union (src/mesh/solid_union.cpp).
-# Licence: CGAL's Polygon Mesh Processing is GPL-3.0-or-later (docs/welded.md, "Solid union").
-set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
-find_package(CGAL 5.5 REQUIRED)
+# Licence: CGAL's Polygon Mesh Processing is GPL-3.0-or-later (docs/welded.md, "Solid union");
+# -DRAMUS_WITH_CGAL=OFF builds ramus without it (and without the solid union).
+if(RAMUS_WITH_CGAL)
+  set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
+  find_package(CGAL 5.5 REQUIRED)
+endif()
 if(RAMUS_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -8,6 +8,7 @@
 #include "ramus/export.hpp"
 #include "ramus/file_util.hpp"
 #include "ramus/render.hpp"
+#include "ramus/solid_union.hpp"
 #include "ramus/tree_json.hpp"
 #include "ramus/tree_textures.hpp"
 
@@ -346,6 +347,8 @@ AssetSettings colonizeAssets(const ColonizeConfig& config) {
 
 AssetSettings finishAssets(AssetSettings s) {
     validateLeafParams(s.mesh.leaf);
+    // Before any growing or meshing: a build without CGAL says so at once.
+    if (s.mesh.solidUnion && !solidUnionAvailable()) throw Error(std::string(kSolidUnionMissing));
     if (s.textures) {
         const TreeTextures& t = defaultTextures();
         Material& bark = s.mesh.tube.material;

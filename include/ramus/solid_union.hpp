@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "ramus/mesh.hpp"
 
@@ -62,6 +63,17 @@ struct SolidUnionReport {
 /// degenerate configuration the refinement does not handle, no result that passes the check) the
 /// mesh is left as it was and the reason goes to report->failure. Deterministic. Returns
 /// report.applied.
+/// Throws Error (kSolidUnionMissing) in a build without CGAL (solidUnionAvailable() false).
 bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr);
+
+/// Whether this build has the solid union: CGAL's Polygon Mesh Processing is GPL-3.0-or-later,
+/// and a build configured with -DRAMUS_WITH_CGAL=OFF leaves it (and the GPL) out.
+bool solidUnionAvailable();
+
+/// The message of the error a request for the union gets where it is not available.
+inline constexpr std::string_view kSolidUnionMissing =
+    "the solid union (--union, \"mesh\": {\"union\": true}) is not in this build of ramus: it "
+    "needs CGAL's Polygon Mesh Processing (GPL-3.0-or-later), which this build leaves out "
+    "(configured with -DRAMUS_WITH_CGAL=OFF); use --weld, or rebuild with -DRAMUS_WITH_CGAL=ON";
 
 }  // namespace ramus

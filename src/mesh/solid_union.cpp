@@ -28,6 +28,10 @@
 //    the floats) or pinched edges, else the one with the fewest of both, replaces the mesh.
 #include "ramus/solid_union.hpp"
 
+#include "ramus/error.hpp"
+
+#if RAMUS_WITH_CGAL
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -818,6 +822,30 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
     r.failure.clear();
     mesh = std::move(*best);
     return true;
+}
+
+}  // namespace ramus
+
+#else  // built with -DRAMUS_WITH_CGAL=OFF: no GPL code in the binaries, and no solid union
+
+namespace ramus {
+
+bool unionClosedSurfaces(Mesh& /*mesh*/, SolidUnionReport* /*report*/) {
+    throw Error(std::string(kSolidUnionMissing));
+}
+
+}  // namespace ramus
+
+#endif
+
+namespace ramus {
+
+bool solidUnionAvailable() {
+#if RAMUS_WITH_CGAL
+    return true;
+#else
+    return false;
+#endif
 }
 
 }  // namespace ramus
