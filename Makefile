@@ -8,7 +8,7 @@ CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
 .PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load blender-import format \
-        format-check bench bench-peers fuzz fuzz-smoke batch-check check-floats clean
+        format-check bench bench-peers fuzz fuzz-smoke batch-check union-check check-floats clean
 
 all: build
 
@@ -81,6 +81,12 @@ blender-import: check-tests studio-e2e
 batch-check: build
 	cd $(BUILD) && RAMUS_LARGE_TESTS=1 RAMUS_BIN=$(CURDIR)/$(RAMUS) ./ramus_tests_cli \
 	  --gtest_filter='BatchCli.TenThousand*'
+
+# Issue 9's union check on every shipped L-system and colonization tree (one clean 2-manifold
+# each; Release build, a few minutes; make test runs ABOP 1.27 and two thin trees).
+union-check: build
+	cd $(BUILD) && RAMUS_LARGE_TESTS=1 ./ramus_tests_mesh \
+	  --gtest_filter='SolidUnion.EveryExampleIsOneCleanSurface'
 
 FORMAT_FILES = $(shell git ls-files '*.cpp' '*.hpp')
 format: deps

@@ -108,7 +108,7 @@ void run(ColonizeOptions& o) {
 
     timer.restart();
     const TreeModel model = forestModel(result.trees, assets.mesh, assets.lods);
-    warnOfFailedUnions(model);
+    warnOfBarkCompromises(model);
     timer.lap("mesh");
 
     TreeOutputs outputs = o.outputs;

@@ -89,7 +89,7 @@ void run(LsystemOptions& o) {
     timer.lap("interpret");
 
     const TreeModel model = plantModel(shape, assets.mesh, assets.lods);
-    warnOfFailedUnions(model);
+    warnOfBarkCompromises(model);
     timer.lap("mesh");
 
     writeTreeOutputs(o.outputs, shape.tree, model, o.mesh);

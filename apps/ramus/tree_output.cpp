@@ -110,24 +110,39 @@ void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model,
         counts["lod_triangles"] = lods;
     }
     const TreeMeshReport& report = model.report;
+    if (report.weldedMeshes > 0) {
+        counts["weld_fallbacks"] = report.weldFallbacks;
+        counts["weld_crossings"] = report.weldCrossings;
+    }
     if (report.unionsApplied + report.unionsFailed > 0) {
         counts["unions_applied"] = report.unionsApplied;
         counts["unions_failed"] = report.unionsFailed;
         counts["union_crossings_left"] = report.crossingsLeft;
         counts["union_pinched_edges"] = report.pinchedEdges;
+        counts["union_crossing_moves"] = report.crossingMoves;
     }
     addStageSeconds(counts, timer);
     std::printf("%s\n", counts.dump().c_str());
 }
 
-void warnOfFailedUnions(const TreeModel& model) {
+void warnOfBarkCompromises(const TreeModel& model) {
     const TreeMeshReport& report = model.report;
-    if (report.unionsFailed == 0) return;
-    std::fprintf(stderr,
-                 "warning: solid union not applied to %zu of %zu bark meshes, which stay welded "
-                 "but overlapping (first: %s)\n",
-                 report.unionsFailed, report.unionsFailed + report.unionsApplied,
-                 report.firstFailure.c_str());
+    if (report.unionsFailed > 0) {
+        std::fprintf(stderr,
+                     "warning: solid union not applied to %zu of %zu bark meshes, which stay "
+                     "welded but overlapping (first: %s)\n",
+                     report.unionsFailed, report.unionsFailed + report.unionsApplied,
+                     report.firstFailure.c_str());
+    } else if (report.unionsApplied == 0 && report.weldFallbacks + report.weldCrossings > 0) {
+        std::fprintf(stderr,
+                     "warning: the welded bark is not one clean surface: %zu crowded junctions "
+                     "were closed as separate capped tubes and %zu branches are too short for "
+                     "the rings at both ends (they overlap); %s\n",
+                     report.weldFallbacks, report.weldCrossings,
+                     solidUnionAvailable()
+                         ? "--union makes it one surface"
+                         : "--union would make it one surface, but needs a build with CGAL");
+    }
 }
 
 namespace {

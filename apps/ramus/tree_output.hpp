@@ -129,7 +129,8 @@ void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer);
 /// "unions_failed", then "<stage>_seconds" for every stage of `timer`.
 void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model, const StageTimer& timer);
 
-/// A warning on stderr when the solid union left bark meshes as they were (and why).
-void warnOfFailedUnions(const TreeModel& model);
+/// A warning on stderr when the solid union left bark meshes as they were (and why), or when
+/// welding without the union left several pieces or self-crossings (and what to do).
+void warnOfBarkCompromises(const TreeModel& model);
 
 }  // namespace ramus::cli

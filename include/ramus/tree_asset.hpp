@@ -41,13 +41,20 @@ struct TreeMeshParams {
     Material polygonMaterial{"leaves", {0.25f, 0.5f, 0.15f, 1.0f}, 0.0f, 0.8f, true};
 };
 
-/// What the solid union did to the bark meshes (params.solidUnion), for --stats and warnings.
+/// How welding (params.weldJunctions) and the solid union (params.solidUnion) went on the
+/// final bark meshes (not the LOD planner's trials), for --stats and warnings.
 struct TreeMeshReport {
+    std::size_t weldedMeshes = 0;  ///< tree meshes welded (one per tree and level)
+    /// Over them, before any union: WeldReport::fallbacks (crowded junctions closed as separate
+    /// capped tubes: the surface is several overlapping pieces) and ::crossings (limbs too
+    /// short for both their rings: the surface intersects itself there).
+    std::size_t weldFallbacks = 0, weldCrossings = 0;
     std::size_t unionsApplied = 0;  ///< tree meshes replaced by their union's surface
     std::size_t unionsFailed = 0;   ///< tree meshes left welded (overlapping), see firstFailure
     std::string firstFailure;       ///< SolidUnionReport::failure of the first failed one
-    /// Over the united meshes: SolidUnionReport::remainingIntersections and ::pinchedEdges.
-    std::size_t crossingsLeft = 0, pinchedEdges = 0;
+    /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges and
+    /// ::crossingMoves.
+    std::size_t crossingsLeft = 0, pinchedEdges = 0, crossingMoves = 0;
 };
 
 /// The full-detail mesh "tree" of all `trees`: tubes, polygons as leaves (buildLeafPolygons),

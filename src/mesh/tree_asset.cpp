@@ -25,6 +25,7 @@ struct Detail {
     bool cards = false;
     double keep = 1.0;
     bool solidUnion = false;  // unite each tree's welded bark (final meshes, not LOD trials)
+    bool reported = false;    // a final mesh: how its welding went goes into the report
 };
 
 class TreeMesher {
@@ -44,29 +45,35 @@ public:
         mesh.name = "tree";
         for (std::size_t t = 0; t < trees_.size(); ++t) {
             if (d.prune == 0) {
-                appendMesh(mesh, branches(*trees_[t].tree, tube, d.solidUnion));
+                appendMesh(mesh, branches(*trees_[t].tree, tube, d));
             } else {
                 TubeMeshParams widths = tube;
                 widths.radiusMode = RadiusMode::Widths;
-                appendMesh(mesh, branches(prunedTree(t, d.prune), widths, d.solidUnion));
+                appendMesh(mesh, branches(prunedTree(t, d.prune), widths, d));
             }
         }
         return mesh;
     }
 
-    // One tree's bark: tubes, or one welded surface (united when `solidUnion`).
-    Mesh branches(const BranchTree& tree, const TubeMeshParams& tube, bool solidUnion) const {
+    // One tree's bark: tubes, or one welded surface (united when d.solidUnion).
+    Mesh branches(const BranchTree& tree, const TubeMeshParams& tube, const Detail& d) const {
         if (!params_.weldJunctions) return buildTubeMesh(tree, tube);
         WeldedMeshParams welded;
         welded.tube = tube;
-        welded.solidUnion = solidUnion;
+        welded.solidUnion = d.solidUnion;
         WeldReport weld;
         Mesh mesh = buildWeldedTreeMesh(tree, welded, &weld);
-        if (solidUnion && report_ != nullptr) {
+        if (d.reported && report_ != nullptr) {
+            ++report_->weldedMeshes;
+            report_->weldFallbacks += weld.fallbacks;
+            report_->weldCrossings += weld.crossings;
+        }
+        if (d.solidUnion && report_ != nullptr) {
             if (weld.solidUnion.applied) {
                 ++report_->unionsApplied;
                 report_->crossingsLeft += weld.solidUnion.remainingIntersections;
                 report_->pinchedEdges += weld.solidUnion.pinchedEdges;
+                report_->crossingMoves += weld.solidUnion.crossingMoves;
             } else if (!mesh.primitives.empty()) {
                 if (report_->unionsFailed++ == 0) report_->firstFailure = weld.solidUnion.failure;
             }
@@ -225,6 +232,7 @@ Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& p
     full.minSegments = params.tube.minSegments;
     full.maxSegments = std::max(params.tube.maxSegments, params.tube.minSegments);
     full.solidUnion = params.solidUnion;
+    full.reported = true;
     return TreeMesher(trees, params, report).both(full);
 }
 
@@ -268,6 +276,7 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
         lod.ratio = ratios[i];
         lod.targetTriangles = static_cast<std::size_t>(target);
         d.solidUnion = params.solidUnion;
+        d.reported = true;
         lod.mesh = mesher.both(d);
         lod.mesh.name = "tree_LOD" + std::to_string(i);
         lod.minSegments = d.minSegments;

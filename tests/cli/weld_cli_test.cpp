@@ -65,6 +65,37 @@ TEST(WeldCli, LsystemUnionUnitesTheWeldedBark) {
     keepForValidation(glb, "union_cli_tree_3d_tropism.glb");
 }
 
+// --stats counts what welding alone could not make one clean surface, and the CLI warns and
+// points to --union: ABOP 1.27's crowded junctions fall back (docs/welded.md: 8 fallbacks, 27
+// crossings); tree_3d welds cleanly (no warning), and with --union there is nothing to warn of.
+TEST(WeldCli, WeldingThatLeavesPiecesIsCountedAndWarned) {
+    const fs::path dir = scratchDirectory("weld_warning");
+    const std::string dense = RAMUS_SOURCE_DIR "/examples/lsystems/abop_1_27.lsys";
+    CommandResult r = runRamus("lsystem " + dense + " --weld --stats", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    nlohmann::json counts = nlohmann::json::parse(r.out);
+    EXPECT_GT(counts["weld_fallbacks"].get<int>(), 0);
+    EXPECT_GT(counts["weld_crossings"].get<int>(), 0);
+    EXPECT_NE(r.err.find("warning: the welded bark is not one clean surface"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("--union"), std::string::npos) << r.err;
+
+    r = runRamus("lsystem " + dense + " --union --stats", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["union_crossings_left"], 0);
+
+    const std::string clean = RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys";
+    r = runRamus("lsystem " + clean + " -n 4 --weld --stats", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    counts = nlohmann::json::parse(r.out);
+    EXPECT_EQ(counts["weld_fallbacks"], 0);
+    EXPECT_EQ(counts["weld_crossings"], 0);
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    EXPECT_FALSE(nlohmann::json::parse(runRamus("lsystem " + clean + " -n 4 --stats", dir).out)
+                     .contains("weld_fallbacks"));  // tubes: nothing welded
+}
+
 // examples/colonize/fig3_2_ring.json with `meshKeys` added to its "mesh" object, written to
 // dir/ring.json.
 fs::path ringConfigWith(const fs::path& dir, const nlohmann::json& meshKeys) {

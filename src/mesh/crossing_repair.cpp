@@ -1,0 +1,220 @@
+// Greedy separation of crossing triangle pairs by float-step moves (crossing_repair.hpp).
+#include "crossing_repair.hpp"
+
+#if RAMUS_WITH_CGAL
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ramus::detail {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Triangle = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Point pointOf(const Vec3f& p) { return {p.x(), p.y(), p.z()}; }
+
+// The spacing of floats at p: the largest of its coordinates' units in the last place.
+double ulpAt(const Vec3f& p) {
+    float largest = 0.0f;
+    for (int axis = 0; axis < 3; ++axis) largest = std::max(largest, std::abs(p[axis]));
+    return static_cast<double>(std::nextafter(largest, std::numeric_limits<float>::infinity()) -
+                               largest);
+}
+
+class Separator {
+public:
+    Separator(CrossingSurface& surface, double maxMove);
+    CrossingRepair run(std::span<const TrianglePair> crossing);
+
+private:
+    Triangle triangle(std::uint32_t t) const;
+    Vec3 normal(std::uint32_t t) const;  // not normalized
+    bool degenerate(std::uint32_t t) const;
+    bool sharePosition(std::uint32_t f, std::uint32_t g) const;
+    bool cross(std::uint32_t f, std::uint32_t g) const;
+    std::size_t crossingsAround(std::uint32_t v);
+    bool turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const;
+    bool separate(std::uint32_t v, const Vec3& partnerNormal);
+
+    CrossingSurface& s_;
+    double maxMove_;
+    std::vector<Vec3f> original_;       // per vertex: where it was (moves stay within maxMove)
+    std::vector<std::uint32_t> first_;  // per vertex + 1: its triangles in around_
+    std::vector<std::uint32_t> around_;
+    std::vector<Triangle> stored_;  // the triangles as they were, for the tree
+    Tree tree_;
+    std::vector<Tree::Primitive_id> hits_;
+    std::vector<Vec3> normals_;     // scratch: normals of a vertex's triangles before a move
+    std::vector<Vec3> directions_;  // scratch: the directions of a vertex's moves
+};
+
+Separator::Separator(CrossingSurface& surface, double maxMove)
+    : s_(surface), maxMove_(maxMove), original_(surface.points) {
+    const std::size_t vertices = s_.points.size();
+    first_.assign(vertices + 1, 0);
+    for (const auto& t : s_.triangles) {
+        for (std::uint32_t v : t) ++first_[v + 1];
+    }
+    for (std::size_t v = 0; v < vertices; ++v) first_[v + 1] += first_[v];
+    around_.resize(first_.back());
+    std::vector<std::uint32_t> fill(first_.begin(), first_.end() - 1);
+    for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) {
+        for (std::uint32_t v : s_.triangles[t]) around_[fill[v]++] = t;
+    }
+    stored_.reserve(s_.triangles.size());
+    for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) stored_.push_back(triangle(t));
+    tree_.insert(stored_.cbegin(), stored_.cend());
+    tree_.build();
+}
+
+Triangle Separator::triangle(std::uint32_t t) const {
+    const auto& v = s_.triangles[t];
+    return {pointOf(s_.points[v[0]]), pointOf(s_.points[v[1]]), pointOf(s_.points[v[2]])};
+}
+
+Vec3 Separator::normal(std::uint32_t t) const {
+    const auto& v = s_.triangles[t];
+    const Vec3 a = s_.points[v[0]].cast<double>();
+    return (s_.points[v[1]].cast<double>() - a).cross(s_.points[v[2]].cast<double>() - a);
+}
+
+bool Separator::degenerate(std::uint32_t t) const {
+    const auto& v = s_.triangles[t];
+    return CGAL::collinear(pointOf(s_.points[v[0]]), pointOf(s_.points[v[1]]),
+                           pointOf(s_.points[v[2]]));
+}
+
+bool Separator::sharePosition(std::uint32_t f, std::uint32_t g) const {
+    for (std::uint32_t a : s_.triangles[f]) {
+        for (std::uint32_t b : s_.triangles[g]) {
+            if (s_.points[a] == s_.points[b]) return true;
+        }
+    }
+    return false;
+}
+
+// As the solid union counts crossings: triangles that share no position and intersect (exact).
+bool Separator::cross(std::uint32_t f, std::uint32_t g) const {
+    if (sharePosition(f, g) || degenerate(f) || degenerate(g)) return false;
+    return CGAL::do_intersect(triangle(f), triangle(g));
+}
+
+// Crossing pairs with one of v's triangles. Every vertex stays within maxMove of where it was,
+// so a triangle meeting one of v's triangles now was, as stored, within maxMove of its box.
+std::size_t Separator::crossingsAround(std::uint32_t v) {
+    std::size_t count = 0;
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+        const std::uint32_t f = around_[i];
+        CGAL::Bbox_3 box = triangle(f).bbox();
+        const double grow = 1.01 * maxMove_;
+        box = CGAL::Bbox_3(box.xmin() - grow, box.ymin() - grow, box.zmin() - grow,
+                           box.xmax() + grow, box.ymax() + grow, box.zmax() + grow);
+        hits_.clear();
+        tree_.all_intersected_primitives(box, std::back_inserter(hits_));
+        for (const auto& hit : hits_) {
+            const auto g = static_cast<std::uint32_t>(hit - stored_.cbegin());
+            if (g != f && cross(f, g)) ++count;
+        }
+    }
+    return count;
+}
+
+// Every triangle of v keeps its orientation and some area (normals before the move given).
+bool Separator::turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const {
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+        const std::uint32_t t = around_[i];
+        if (!(normal(t).dot(before[i - first_[v]]) > 0.0) || degenerate(t)) return false;
+    }
+    return true;
+}
+
+// Tries moves of v, smallest first: 1, 2, 4, … float steps along its normal, the partner
+// triangle's, towards its neighbours and along the axes, both ways; keeps the first that lowers
+// the crossings around v.
+bool Separator::separate(std::uint32_t v, const Vec3& partnerNormal) {
+    const std::size_t before = crossingsAround(v);
+    if (before == 0) return false;
+    normals_.clear();
+    Vec3 vertexNormal = Vec3::Zero();
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+        normals_.push_back(normal(around_[i]));
+        vertexNormal += normals_.back();
+    }
+    const Vec3f start = s_.points[v];
+    const Vec3 p = start.cast<double>();
+    // Off the sheets first (normals); then towards the middle of the vertex's neighbours, which
+    // widens a sliver, and along the axes.
+    Vec3 middle = Vec3::Zero();
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+        for (std::uint32_t w : s_.triangles[around_[i]]) middle += s_.points[w].cast<double>();
+    }
+    middle /= 3.0 * (first_[v + 1] - first_[v]);
+    directions_.clear();
+    for (const Vec3& d : {vertexNormal, partnerNormal, Vec3(middle - p), Vec3(Vec3::UnitX()),
+                          Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ())}) {
+        if (d.norm() > 0.0) {
+            directions_.push_back(d.normalized());
+            directions_.push_back(-d.normalized());
+        }
+    }
+    const double ulp = ulpAt(start);
+    for (double step = ulp; step <= maxMove_; step *= 2.0) {
+        for (const Vec3& d : directions_) {
+            const Vec3f q = (p + step * d).cast<float>();
+            if (q == start || (q - original_[v]).cast<double>().norm() > maxMove_) continue;
+            s_.points[v] = q;
+            if (turnsNoTriangle(v, normals_) && crossingsAround(v) < before) return true;
+            s_.points[v] = start;
+        }
+    }
+    return false;
+}
+
+CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
+    CrossingRepair repair;
+    for (int round = 0; round < 4; ++round) {
+        bool moved = false;
+        for (const auto& [f, g] : crossing) {
+            for (int side = 0; side < 2 && cross(f, g); ++side) {
+                const std::uint32_t mine = side == 0 ? f : g;
+                const Vec3 partnerNormal = normal(side == 0 ? g : f);
+                for (std::uint32_t v : s_.triangles[mine]) {
+                    if ((!s_.fixed.empty() && s_.fixed[v]) || !separate(v, partnerNormal)) {
+                        continue;
+                    }
+                    ++repair.movedVertices;
+                    moved = true;
+                    if (!cross(f, g)) break;
+                }
+            }
+        }
+        if (!moved) break;
+    }
+    repair.pairsLeft = static_cast<std::size_t>(
+        std::count_if(crossing.begin(), crossing.end(),
+                      [&](const TrianglePair& p) { return cross(p.first, p.second); }));
+    return repair;
+}
+
+}  // namespace
+
+CrossingRepair separateCrossings(CrossingSurface& surface, std::span<const TrianglePair> crossing,
+                                 double maxMove) {
+    if (crossing.empty()) return {};
+    return Separator(surface, maxMove).run(crossing);
+}
+
+}  // namespace ramus::detail
+
+#endif  // RAMUS_WITH_CGAL

@@ -1,0 +1,50 @@
+// Separating triangles that cross only because their corners were rounded to float: the solid
+// union's last step (src/mesh/solid_union.cpp). Internal to src/mesh; built with CGAL only.
+//
+// Where two sheets of the union graze each other, the exact cut leaves them apart by less than
+// float resolution, and rounding the new corners to float can make a triangle reach through
+// the other sheet by a few units in the last place (docs/welded.md measured at most 4e-8 of the
+// plant's extent on all but three plants). Such a crossing goes away when one corner of the
+// pair moves by a few ulps off the other sheet. Snap rounding would settle it in general (CGAL
+// 5.5 has none for surfaces); this is a greedy local search of ours: corners of crossing pairs
+// are moved, smallest move first, where that lowers the number of crossings their triangles
+// take part in and turns no triangle over.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "ramus/math.hpp"
+
+namespace ramus::detail {
+
+/// Closed surfaces as surface vertices and triangles over them.
+struct CrossingSurface {
+    std::vector<Vec3f> points;                            ///< per surface vertex
+    std::vector<std::array<std::uint32_t, 3>> triangles;  ///< surface vertices, outward wound
+    std::vector<char> fixed;  ///< per surface vertex: may not move (empty: all may)
+};
+
+/// A pair of triangles (indices into CrossingSurface::triangles) that cross.
+using TrianglePair = std::pair<std::uint32_t, std::uint32_t>;
+
+/// What separateCrossings did.
+struct CrossingRepair {
+    std::size_t movedVertices = 0;  ///< moves made (a vertex may move more than once)
+    std::size_t pairsLeft = 0;      ///< of the given pairs, those that still cross
+};
+
+/// Moves corners of the crossing pairs `crossing` (triangles that intersect and share no
+/// position, exact predicates on the float positions) by at most `maxMove` each, in float
+/// steps, so that they no longer cross. A move is made only where it lowers the number of
+/// crossings the vertex's triangles take part in (against every triangle of the surface) and
+/// turns none of them over; moves are tried smallest first, along the vertex normal and along
+/// the other triangle's normal, both ways. Deterministic.
+CrossingRepair separateCrossings(CrossingSurface& surface, std::span<const TrianglePair> crossing,
+                                 double maxMove);
+
+}  // namespace ramus::detail

@@ -1,0 +1,116 @@
+// The solid union's last step (src/mesh/crossing_repair.hpp): triangle pairs that cross by a
+// few float steps, as rounding the cut leaves them where surfaces graze, are separated by
+// moving corners a few float steps; real crossings stay, and nothing moves farther than allowed.
+#include "mesh/crossing_repair.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "welded_checks.hpp"
+
+namespace ramus {
+namespace {
+
+// Two closed surfaces: the unit cube (12 triangles, outward) and a tetrahedron standing on its
+// apex above the cube's top face, the apex at height `apexZ` over (0.3, 0.4).
+detail::CrossingSurface cubeAndTetrahedron(float apexZ) {
+    detail::CrossingSurface s;
+    for (int i = 0; i < 8; ++i) {
+        s.points.emplace_back(static_cast<float>(i & 1), static_cast<float>((i >> 1) & 1),
+                              static_cast<float>((i >> 2) & 1));
+    }
+    const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        s.triangles.push_back({q[0], q[1], q[2]});
+        s.triangles.push_back({q[0], q[2], q[3]});
+    }
+    s.points.emplace_back(0.3f, 0.4f, apexZ);  // 8: apex
+    s.points.emplace_back(0.0f, 0.0f, 2.0f);   // 9, 10, 11: the base above
+    s.points.emplace_back(0.9f, 0.1f, 2.0f);
+    s.points.emplace_back(0.2f, 0.9f, 2.0f);
+    // Base facing up (counter-clockwise from above), sides facing out.
+    s.triangles.push_back({9, 10, 11});
+    s.triangles.push_back({8, 10, 9});
+    s.triangles.push_back({8, 11, 10});
+    s.triangles.push_back({8, 9, 11});
+    return s;
+}
+
+Mesh meshOf(const detail::CrossingSurface& s) {
+    Mesh mesh;
+    mesh.positions = s.points;
+    for (const auto& t : s.triangles) mesh.indices.insert(mesh.indices.end(), t.begin(), t.end());
+    return mesh;
+}
+
+// Every pair of a cube triangle and a tetrahedron triangle (separateCrossings works on the
+// ones that cross).
+std::vector<detail::TrianglePair> cubeTetrahedronPairs() {
+    std::vector<detail::TrianglePair> pairs;
+    for (std::uint32_t f = 0; f < 12; ++f) {
+        for (std::uint32_t g = 12; g < 16; ++g) pairs.emplace_back(f, g);
+    }
+    return pairs;
+}
+
+double largestMove(const detail::CrossingSurface& before, const detail::CrossingSurface& after) {
+    double largest = 0.0;
+    for (std::size_t v = 0; v < before.points.size(); ++v) {
+        largest = std::max(largest, (after.points[v] - before.points[v]).cast<double>().norm());
+    }
+    return largest;
+}
+
+constexpr double kMaxMove = 2e-5;  // 1e-5 of the extent, as the solid union allows
+
+// The apex reaches 3 float steps through the cube's top face: one corner moves a few steps
+// and nothing crosses any more; the surfaces keep their volumes.
+TEST(CrossingRepair, GrazingCrossingIsSeparatedByFloatSteps) {
+    const float ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
+    const detail::CrossingSurface start = cubeAndTetrahedron(1.0f - 3.0f * ulp);
+    ASSERT_GT(test::countSelfIntersections(meshOf(start), 100), 0u);
+    detail::CrossingSurface s = start;
+    const std::vector<detail::TrianglePair> pairs = cubeTetrahedronPairs();
+    const detail::CrossingRepair repair = detail::separateCrossings(s, pairs, kMaxMove);
+    EXPECT_EQ(repair.pairsLeft, 0u);
+    EXPECT_GE(repair.movedVertices, 1u);
+    EXPECT_EQ(test::countSelfIntersections(meshOf(s), 100), 0u);
+    const double moved = largestMove(start, s);
+    EXPECT_GT(moved, 0.0);
+    EXPECT_LE(moved, 32.0 * ulp);  // a few float steps, far below the allowed move
+    const test::Topology top = test::analyzeTopology(meshOf(s));
+    EXPECT_TRUE(top.closedOriented);
+    EXPECT_NEAR(test::signedVolume(meshOf(s)), test::signedVolume(meshOf(start)), 1e-5);
+}
+
+// A real crossing (the apex 0.1 deep in the cube) is not the rounding's: no move within the
+// allowed distance separates it, and no corner moves farther than allowed.
+TEST(CrossingRepair, RealCrossingStaysAndNothingMovesFarther) {
+    const detail::CrossingSurface start = cubeAndTetrahedron(0.9f);
+    detail::CrossingSurface s = start;
+    const std::vector<detail::TrianglePair> pairs = cubeTetrahedronPairs();
+    const detail::CrossingRepair repair = detail::separateCrossings(s, pairs, kMaxMove);
+    EXPECT_GE(repair.pairsLeft, 3u);  // the three sides through the top face, at least
+    EXPECT_LE(largestMove(start, s), kMaxMove);
+    EXPECT_GT(test::countSelfIntersections(meshOf(s), 100), 0u);
+}
+
+// Vertices marked fixed stay where they are, even where moving them would separate a pair.
+TEST(CrossingRepair, FixedVerticesStay) {
+    const float ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
+    const detail::CrossingSurface start = cubeAndTetrahedron(1.0f - 3.0f * ulp);
+    detail::CrossingSurface s = start;
+    s.fixed.assign(s.points.size(), 1);
+    const std::vector<detail::TrianglePair> pairs = cubeTetrahedronPairs();
+    const detail::CrossingRepair repair = detail::separateCrossings(s, pairs, kMaxMove);
+    EXPECT_EQ(repair.movedVertices, 0u);
+    EXPECT_GT(repair.pairsLeft, 0u);
+    EXPECT_EQ(largestMove(start, s), 0.0);
+}
+
+}  // namespace
+}  // namespace ramus
