@@ -109,40 +109,46 @@ void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model,
         for (const TreeLod& lod : model.lods) lods.push_back(lod.mesh.triangleCount());
         counts["lod_triangles"] = lods;
     }
-    const TreeMeshReport& report = model.report;
-    if (report.weldedMeshes > 0) {
-        counts["weld_fallbacks"] = report.weldFallbacks;
-        counts["weld_crossings"] = report.weldCrossings;
-    }
-    if (report.unionsApplied + report.unionsFailed > 0) {
-        counts["unions_applied"] = report.unionsApplied;
-        counts["unions_failed"] = report.unionsFailed;
-        counts["union_crossings_left"] = report.crossingsLeft;
-        counts["union_pinched_edges"] = report.pinchedEdges;
-        counts["union_crossing_moves"] = report.crossingMoves;
-    }
+    addBarkStats(counts, model.report);
     addStageSeconds(counts, timer);
     std::printf("%s\n", counts.dump().c_str());
 }
 
-void warnOfBarkCompromises(const TreeModel& model) {
-    const TreeMeshReport& report = model.report;
-    if (report.unionsFailed > 0) {
-        std::fprintf(stderr,
-                     "warning: solid union not applied to %zu of %zu bark meshes, which stay "
-                     "welded but overlapping (first: %s)\n",
-                     report.unionsFailed, report.unionsFailed + report.unionsApplied,
-                     report.firstFailure.c_str());
-    } else if (report.unionsApplied == 0 && report.weldFallbacks + report.weldCrossings > 0) {
-        std::fprintf(stderr,
-                     "warning: the welded bark is not one clean surface: %zu crowded junctions "
-                     "were closed as separate capped tubes and %zu branches are too short for "
-                     "the rings at both ends (they overlap); %s\n",
-                     report.weldFallbacks, report.weldCrossings,
-                     solidUnionAvailable()
-                         ? "--union makes it one surface"
-                         : "--union would make it one surface, but needs a build with CGAL");
+void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
+    if (report.weldedMeshes > 0) {
+        stats["weld_fallbacks"] = report.weldFallbacks;
+        stats["weld_crossings"] = report.weldCrossings;
     }
+    if (report.unionsApplied + report.unionsFailed > 0) {
+        stats["unions_applied"] = report.unionsApplied;
+        stats["unions_failed"] = report.unionsFailed;
+        stats["union_crossings_left"] = report.crossingsLeft;
+        stats["union_pinched_edges"] = report.pinchedEdges;
+        stats["union_crossing_moves"] = report.crossingMoves;
+    }
+}
+
+std::string barkWarning(const TreeMeshReport& report) {
+    if (report.unionsFailed > 0) {
+        return "solid union not applied to " + std::to_string(report.unionsFailed) + " of " +
+               std::to_string(report.unionsFailed + report.unionsApplied) +
+               " bark meshes, which stay welded but overlapping (first: " + report.firstFailure +
+               ")";
+    }
+    if (report.unionsApplied > 0 || report.weldFallbacks + report.weldCrossings == 0) return {};
+    return "the welded bark is not one clean surface: " + std::to_string(report.weldFallbacks) +
+           " crowded junctions were closed as separate capped tubes and " +
+           std::to_string(report.weldCrossings) +
+           " branches are too short for the rings at both ends (they overlap); " +
+           (solidUnionAvailable()
+                ? "the solid union (--union) makes it one surface"
+                : "the solid union (--union) would make it one surface, but needs a build with "
+                  "CGAL");
+}
+
+void warnOfBarkCompromises(const TreeModel& model) {
+    const std::string warning = barkWarning(model.report);
+    if (!warning.empty()) std::fprintf(stderr, "warning: %s\n", warning.c_str());
 }
 
 namespace {

@@ -125,12 +125,21 @@ private:
 void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer);
 
 /// Prints --stats as one JSON line: `counts` (in their order), the mesh's "vertices",
-/// "triangles", "leaf_triangles", with LODs "lod_triangles", with --union "unions_applied" and
-/// "unions_failed", then "<stage>_seconds" for every stage of `timer`.
+/// "triangles", "leaf_triangles", with LODs "lod_triangles", the bark's (addBarkStats), then
+/// "<stage>_seconds" for every stage of `timer`.
 void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model, const StageTimer& timer);
 
-/// A warning on stderr when the solid union left bark meshes as they were (and why), or when
-/// welding without the union left several pieces or self-crossings (and what to do).
+/// Adds, when the bark was welded, "weld_fallbacks" and "weld_crossings", and with the union
+/// "unions_applied", "unions_failed", "union_crossings_left", "union_pinched_edges" and
+/// "union_crossing_moves" to `stats`.
+void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report);
+
+/// What a user should know about the bark: the solid union left meshes as they were (and why),
+/// or welding without the union left several pieces or self-crossings (and what to do); empty
+/// when neither.
+std::string barkWarning(const TreeMeshReport& report);
+
+/// barkWarning as a warning on stderr.
 void warnOfBarkCompromises(const TreeModel& model);
 
 }  // namespace ramus::cli

@@ -173,6 +173,37 @@ TEST_F(Studio, DerivesAnLSystemWithTheLibrarysModuleCount) {
     expectGlb(r.body["glb"], "koch_island");
 }
 
+// The bark options of the L-system panel: welding a dense plant (ABOP 1.27: crowded junctions)
+// leaves pieces, which the reply counts and warns of; the union (on a small tree, within the
+// time budget) makes it one surface, without a warning; a wrong type names the key.
+TEST_F(Studio, WeldsAndUnitesTheBarkAndWarnsOfPieces) {
+    const std::string dense = readFile(RAMUS_SOURCE_DIR "/examples/lsystems/abop_1_27.lsys");
+    const Reply welded = post("/api/lsystem", json{{"text", dense}, {"mesh", {{"weld", true}}}});
+    ASSERT_EQ(welded.status, 200) << welded.body.dump().substr(0, 300);
+    EXPECT_GT(welded.body["stats"]["weld_fallbacks"].get<int>(), 0);
+    ASSERT_EQ(welded.body["warnings"].size(), 1u);
+    EXPECT_NE(welded.body["warnings"][0].get<std::string>().find("not one clean surface"),
+              std::string::npos);
+    const Reply tubes = post("/api/lsystem", json{{"text", dense}});
+    EXPECT_FALSE(tubes.body["stats"].contains("weld_fallbacks"));
+    EXPECT_TRUE(tubes.body["warnings"].empty());
+    EXPECT_NE(tubes.body["stats"]["triangles"], welded.body["stats"]["triangles"]);
+
+    const std::string small = readFile(RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys");
+    const Reply united = post(
+        "/api/lsystem", json{{"text", small}, {"derivations", 3}, {"mesh", {{"union", true}}}});
+    ASSERT_EQ(united.status, 200) << united.body.dump().substr(0, 300);
+    EXPECT_EQ(united.body["stats"]["unions_applied"], 1);
+    EXPECT_EQ(united.body["stats"]["union_crossings_left"], 0);
+    EXPECT_TRUE(united.body["warnings"].empty()) << united.body["warnings"].dump();
+
+    const Reply wrong = post("/api/lsystem", json{{"text", small}, {"mesh", {{"weld", "yes"}}}});
+    EXPECT_EQ(wrong.status, 400);
+    EXPECT_NE(wrong.body["error"]["message"].get<std::string>().find("mesh.weld"),
+              std::string::npos)
+        << wrong.body.dump();
+}
+
 TEST_F(Studio, ReportsASyntaxErrorAtItsLineAndColumn) {
     const Reply r = post("/api/lsystem", json{{"text", "axiom: F\nF -> F(+F\n"}});
     ASSERT_EQ(r.status, 400) << r.body.dump();

@@ -99,6 +99,14 @@ async function run(page, url) {
   await page.click('#ls-generate');
   status = await waitForStatus(page, /done|error/);
   check('L-system preset generated', status.startsWith('done'), status);
+  // The bark options: a dense plant welded is not one surface, and the status says so.
+  await page.selectOption('#ls-preset', 'abop_1_27');
+  await page.check('#ls-weld');
+  await page.click('#ls-generate');
+  status = await waitForStatus(page, /done|error/);
+  check('welded bark warns of pieces', status.includes('not one clean surface'), status);
+  await page.uncheck('#ls-weld');
+  await page.selectOption('#ls-preset', 'koch_island');
   const text = await page.inputValue('#ls-text');
   const errorLine = text.split('\n').length + 1;
   await page.fill('#ls-text', `${text}\nX -> F(+\n`);

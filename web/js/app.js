@@ -154,7 +154,7 @@ async function main() {
         const body = await timedPost('/api/lsystem', lsystem.request(), timing);
         renderGallery(viewer, []);
         await show(viewer, { name: $('ls-preset').value || 'plant', glb: decodeBase64(body.glb) }, body.stats);
-        return `${body.stats.modules} modules, ${body.stats.triangles} triangles`;
+        return [`${body.stats.modules} modules, ${body.stats.triangles} triangles`, ...body.warnings].join('; ');
       } catch (e) {
         if (e instanceof ApiError && e.line) lsystem.markError(e.line, e.column);
         throw e;

@@ -61,6 +61,9 @@ export class LsystemPanel {
     const seed = $('ls-seed').value.trim();
     const body = { text: $('ls-text').value, derivations: Number($('ls-derivations').value) };
     if (seed !== '') body.seed = Number(seed);
+    if ($('ls-weld').checked || $('ls-union').checked) {
+      body.mesh = { weld: true, union: $('ls-union').checked };
+    }
     return body;
   }
 }

@@ -21,11 +21,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TubeMeshParams meshParamsFrom(const nlohmann::json& request) {
-    TubeMeshParams params;
-    const nlohmann::json* mesh = optionalMember(request, "mesh", nlohmann::json::value_t::object);
-    if (!mesh) return params;
-    for (const auto& [key, value] : mesh->items()) {
+// The request's "mesh" object: the tube settings, and whether the bark is welded into one
+// surface ("weld") or also united ("union", implies weld), as `ramus lsystem --weld / --union`.
+TreeMeshParams meshParamsFrom(const nlohmann::json& request) {
+    TreeMeshParams mesh;
+    TubeMeshParams& params = mesh.tube;
+    const nlohmann::json* object = optionalMember(request, "mesh", nlohmann::json::value_t::object);
+    if (!object) return mesh;
+    for (const auto& [key, value] : object->items()) {
         const std::string path = "mesh." + key;
         if (key == "leaf_radius") {
             params.leafRadius = numberIn(value, path, 0.0, 1e9);
@@ -41,11 +44,15 @@ TubeMeshParams meshParamsFrom(const nlohmann::json& request) {
             params.curveReduction = numberIn(value, path, 0.0, 0.999999);
         } else if (key == "cap_tips") {
             params.capTips = boolean(value, path);
+        } else if (key == "weld") {
+            mesh.weldJunctions = boolean(value, path);
+        } else if (key == "union") {
+            mesh.solidUnion = boolean(value, path);
         } else {
             throw ApiError(400, path +
                                     ": unknown key; expected leaf_radius, radius_exponent, "
                                     "trunk_multiplier, min_segments, max_segments, "
-                                    "curve_reduction or cap_tips");
+                                    "curve_reduction, cap_tips, weld or union");
         }
     }
     if (params.maxSegments < params.minSegments) {
@@ -53,7 +60,8 @@ TubeMeshParams meshParamsFrom(const nlohmann::json& request) {
                                 std::to_string(params.minSegments) + "), got " +
                                 std::to_string(params.maxSegments));
     }
-    return params;
+    mesh.weldJunctions = mesh.weldJunctions || mesh.solidUnion;
+    return mesh;
 }
 
 /// The tree's GLB as base64, after checking the triangle budget.
@@ -144,7 +152,7 @@ nlohmann::json lsystemRequest(const nlohmann::json& request, const StudioLimits&
         derive.overrideSeed = true;
         derive.seed = seedFrom(request["seed"], "seed");
     }
-    const TubeMeshParams meshParams = meshParamsFrom(request);
+    const TreeMeshParams meshParams = meshParamsFrom(request);
     StageTimer clock;
     const LSystem system =
         withTextErrors([&] { return parseLSystem(text, "input.lsys", parseOptions); });
@@ -161,19 +169,26 @@ nlohmann::json lsystemRequest(const nlohmann::json& request, const StudioLimits&
     clock.lap("interpret");
     deadline.check("turtle interpretation");
     cli::AssetSettings assets;  // as `ramus lsystem` with the request's mesher settings
-    assets.mesh.tube = meshParams;
-    assets = cli::finishAssets(std::move(assets));
-    Mesh mesh = cli::plantModel(shape, assets.mesh, {}).mesh;
+    assets.mesh = meshParams;
+    assets = withTextErrors([&] { return cli::finishAssets(std::move(assets)); });
+    cli::TreeModel model = cli::plantModel(shape, assets.mesh, {});
     clock.lap("mesh");
     deadline.check("meshing");
-    nlohmann::ordered_json stats = {
-        {"modules", word.size()},          {"nodes", shape.tree.size()},
-        {"edges", shape.tree.edgeCount()}, {"polygons", shape.polygonCount()},
-        {"vertices", mesh.vertexCount()},  {"triangles", mesh.triangleCount()}};
-    std::string glb = treeGlb(std::move(mesh), limits);
+    nlohmann::ordered_json stats = {{"modules", word.size()},
+                                    {"nodes", shape.tree.size()},
+                                    {"edges", shape.tree.edgeCount()},
+                                    {"polygons", shape.polygonCount()},
+                                    {"vertices", model.mesh.vertexCount()},
+                                    {"triangles", model.mesh.triangleCount()}};
+    cli::addBarkStats(stats, model.report);
+    nlohmann::json warnings = nlohmann::json::array();
+    if (const std::string bark = cli::barkWarning(model.report); !bark.empty()) {
+        warnings.push_back(bark);
+    }
+    std::string glb = treeGlb(std::move(model.mesh), limits);
     clock.lap("encode");
     cli::addStageSeconds(stats, clock);
-    return {{"glb", std::move(glb)}, {"stats", stats}};
+    return {{"glb", std::move(glb)}, {"stats", stats}, {"warnings", warnings}};
 }
 
 nlohmann::json colonizeRequest(const nlohmann::json& request, const StudioLimits& limits) {
@@ -214,7 +229,7 @@ nlohmann::json colonizeRequest(const nlohmann::json& request, const StudioLimits
     // The config's whole asset (leaves, textures, weld) as `ramus colonize` makes it; the view
     // shows the full detail, so LODs are left out.
     const cli::AssetSettings assets = withTextErrors([&] { return cli::colonizeAssets(config); });
-    Mesh mesh = cli::forestModel(result.trees, assets.mesh, {}).mesh;
+    cli::TreeModel model = cli::forestModel(result.trees, assets.mesh, {});
     clock.lap("mesh");
     deadline.check("meshing");
     nlohmann::ordered_json stats = {{"trees", result.trees.size()},
@@ -222,14 +237,19 @@ nlohmann::json colonizeRequest(const nlohmann::json& request, const StudioLimits
                                     {"attractors_left", result.attractorsLeft},
                                     {"iterations", result.iterations},
                                     {"nodes", result.nodeCount()},
-                                    {"vertices", mesh.vertexCount()},
-                                    {"triangles", mesh.triangleCount()}};
-    std::string glb = treeGlb(std::move(mesh), limits);
+                                    {"vertices", model.mesh.vertexCount()},
+                                    {"triangles", model.mesh.triangleCount()}};
+    cli::addBarkStats(stats, model.report);
+    std::vector<std::string> warnings = result.warnings;
+    if (std::string bark = cli::barkWarning(model.report); !bark.empty()) {
+        warnings.push_back(std::move(bark));
+    }
+    std::string glb = treeGlb(std::move(model.mesh), limits);
     clock.lap("encode");
     cli::addStageSeconds(stats, clock);
     return {{"glb", std::move(glb)},
             {"stats", stats},
-            {"warnings", result.warnings},
+            {"warnings", warnings},
             {"points", shownPoints(points, limits.maxShownPoints)}};
 }
 
