@@ -29,8 +29,12 @@ int segmentsFor(const TubeMeshParams& params, double radius, double maxRadius) {
 // ABOP 1.24b's `[F]` and the `F` of the following branch from the same state, and 1.24f's
 // `+X` and `+F` along the same line; the copies agree to rounding, far below this.
 constexpr double kSiblingTolerance = 1e-3;
-// Chains turning by more than 120° at a node (cosine of the turn below this) get a junction.
-constexpr double kFoldCosine = -0.5;
+// Chains turning by more than about 93° at a node (cosine of the turn below this) get a
+// junction. Until session 17 this was 120°: colonization tips that turned by 96–108° just
+// past a branch node ran their tube through that node's hull (the junction triangle
+// intersections of broadleaf 12, hedge_4 4, roots 7, all gone at this bound; docs/welded.md).
+// Not 90° itself: the turtle's right angles (koch_island) come out a rounding error either side.
+constexpr double kFoldCosine = -0.05;
 
 // Drawn edges by the grid cell of their end node, to find an edge drawn again from another
 // node: ABOP 1.31a's lattice of unit steps at multiples of 22.5° sends later branches along
