@@ -7,16 +7,13 @@
 
 #include "ramus/rng.hpp"
 #include "ramus/tube_mesher.hpp"
+#include "tube_test_util.hpp"
 
 namespace ramus {
 namespace {
 
-BranchTree chainTree(const std::vector<Vec3>& points) {
-    BranchTree tree;
-    NodeId node = tree.addRoot(points.front());
-    for (std::size_t i = 1; i < points.size(); ++i) node = tree.addChild(node, points[i]);
-    return tree;
-}
+using test::chainTree;
+using test::fixedSegments;
 
 std::vector<Vec3> helix(int nodes, double turnDegrees, double rise) {
     std::vector<Vec3> points;
@@ -41,14 +38,6 @@ BranchTree randomTree(std::uint64_t seed, int nodes) {
         tree.node(id).hidden = rng.uniform01() < 0.03;
     }
     return tree;
-}
-
-TubeMeshParams fixedSegments(int n, bool caps) {
-    TubeMeshParams params;
-    params.minSegments = n;
-    params.maxSegments = n;
-    params.capTips = caps;
-    return params;
 }
 
 // Unit normals, unit tangents perpendicular to them with w = ±1, finite UVs, indices in range.

@@ -15,9 +15,12 @@
 #include "ramus/export.hpp"
 #include "ramus/rng.hpp"
 #include "ramus/scene.hpp"
+#include "tube_test_util.hpp"
 
 namespace ramus {
 namespace {
+
+using test::chainTree;
 
 // Writes `mesh` as GLB into $RAMUS_TEST_OUTPUT (for the glTF validator) when it is set.
 void writeForValidator(const Mesh& mesh, const std::string& name) {
@@ -26,18 +29,9 @@ void writeForValidator(const Mesh& mesh, const std::string& name) {
     writeGlb(makeSingleMeshScene(mesh), std::string(dir) + "/tube_mesher_" + name + ".glb");
 }
 
-BranchTree chainTree(const std::vector<Vec3>& points) {
-    BranchTree tree;
-    NodeId node = tree.addRoot(points.front());
-    for (std::size_t i = 1; i < points.size(); ++i) node = tree.addChild(node, points[i]);
-    return tree;
-}
-
-TubeMeshParams fixedSegments(int n, bool caps = false) {
-    TubeMeshParams params;
-    params.minSegments = n;
-    params.maxSegments = n;
-    params.capTips = caps;
+// Exactly `n` ring segments, tips open unless `caps`, and a leaf radius of 0.1.
+TubeMeshParams thinTipSegments(int n, bool caps = false) {
+    TubeMeshParams params = test::fixedSegments(n, caps);
     params.leafRadius = 0.1;
     return params;
 }
@@ -51,7 +45,7 @@ Vec3 ringCentre(const Mesh& mesh, std::size_t first, int n) {
 
 TEST(TubeMesh, SingleEdgeGivesTwoRingsAndTwoTrianglesPerSegment) {
     const BranchTree tree = chainTree({Vec3(0, 0, 0), Vec3(0, 2, 0)});
-    const Mesh mesh = buildTubeMesh(tree, fixedSegments(6));
+    const Mesh mesh = buildTubeMesh(tree, thinTipSegments(6));
     ASSERT_EQ(mesh.vertexCount(), 2u * 7u);
     EXPECT_EQ(mesh.triangleCount(), 12u);
     EXPECT_NEAR((ringCentre(mesh, 0, 6) - Vec3(0, 0, 0)).norm(), 0.0, 1e-6);
@@ -70,7 +64,7 @@ TEST(TubeMesh, SingleEdgeGivesTwoRingsAndTwoTrianglesPerSegment) {
 TEST(TubeMesh, StraightChainOfEqualBranchDepthSharesRings) {
     std::vector<Vec3> points;
     for (int i = 0; i <= 5; ++i) points.emplace_back(0, i, 0);
-    const Mesh mesh = buildTubeMesh(chainTree(points), fixedSegments(5));
+    const Mesh mesh = buildTubeMesh(chainTree(points), thinTipSegments(5));
     EXPECT_EQ(mesh.vertexCount(), 6u * 6u);     // k + 1 rings for k edges
     EXPECT_EQ(mesh.triangleCount(), 5u * 10u);  // 2n per edge
 }
@@ -82,13 +76,13 @@ TEST(TubeMesh, BranchingNodeStartsANewChainInsideTheParentTube) {
     tree.addChild(a, Vec3(0, 2, 0));                   // first child: same branch depth
     const NodeId c = tree.addChild(a, Vec3(1, 2, 0));  // second child: new chain
     ASSERT_NE(tree.node(c).branchDepth, tree.node(a).branchDepth);
-    const Mesh mesh = buildTubeMesh(tree, fixedSegments(4));
+    const Mesh mesh = buildTubeMesh(tree, thinTipSegments(4));
     ASSERT_EQ(mesh.vertexCount(), (3u + 2u) * 5u);
     EXPECT_EQ(mesh.triangleCount(), 3u * 8u);
     // The side chain's first ring sits at a with the side branch's own (smaller) radius.
     const Vec3 centre = ringCentre(mesh, 15, 4);
     EXPECT_NEAR((centre - tree.node(a).position).norm(), 0.0, 1e-6);
-    const std::vector<double> radii = computeEdgeRadii(tree, fixedSegments(4));
+    const std::vector<double> radii = computeEdgeRadii(tree, thinTipSegments(4));
     EXPECT_NEAR((mesh.positions[15].cast<double>() - centre).norm(), radii[c], 1e-6);
     EXPECT_LT(radii[c], radii[a]);
 }
@@ -100,7 +94,7 @@ TEST(TubeMesh, HiddenEdgesAreNotMeshedAndTheirChildrenStartNewChains) {
     node = tree.addChild(node, Vec3(0, 3, 0));  // gap from y = 1 to y = 3
     tree.node(node).hidden = true;
     tree.addChild(node, Vec3(0, 4, 0));
-    const Mesh mesh = buildTubeMesh(tree, fixedSegments(4));
+    const Mesh mesh = buildTubeMesh(tree, thinTipSegments(4));
     EXPECT_EQ(mesh.vertexCount(), 4u * 5u);  // two chains of two rings each
     EXPECT_EQ(mesh.triangleCount(), 2u * 8u);
     for (const Vec3f& p : mesh.positions) {
@@ -129,7 +123,7 @@ TEST(TubeMesh, OnlyHiddenEdgesGiveAnEmptyMesh) {
 }
 
 TEST(TubeMesh, OutputHasOneBarkPrimitiveWithTheGivenMaterial) {
-    TubeMeshParams params = fixedSegments(5, true);
+    TubeMeshParams params = thinTipSegments(5, true);
     params.material.name = "oak_bark";
     const Mesh mesh = buildTubeMesh(chainTree({Vec3::Zero(), Vec3(0, 1, 0)}), params);
     EXPECT_EQ(mesh.name, "tree");
@@ -161,7 +155,7 @@ TEST(TubeMesh, SegmentCountGrowsLinearlyWithRadius) {
 }
 
 TEST(TubeMesh, TrunkMultiplierWidensOnlyTheRootRing) {
-    TubeMeshParams params = fixedSegments(8);
+    TubeMeshParams params = thinTipSegments(8);
     params.trunkMultiplier = 3.0;
     const Mesh mesh =
         buildTubeMesh(chainTree({Vec3::Zero(), Vec3(0, 1, 0), Vec3(0, 2, 0)}), params);
@@ -172,9 +166,9 @@ TEST(TubeMesh, TrunkMultiplierWidensOnlyTheRootRing) {
 TEST(TubeMesh, StartRotationTurnsTheFirstRingVertex) {
     const BranchTree tree = chainTree({Vec3::Zero(), Vec3(0, 1, 0)});
     // Heading +y: reference axis x (least aligned), e2 = y × x = -z.
-    const Mesh plain = buildTubeMesh(tree, fixedSegments(4));
+    const Mesh plain = buildTubeMesh(tree, thinTipSegments(4));
     EXPECT_NEAR((plain.positions[0].cast<double>() - Vec3(0.1, 0, 0)).norm(), 0.0, 1e-6);
-    TubeMeshParams turned = fixedSegments(4);
+    TubeMeshParams turned = thinTipSegments(4);
     turned.startRotationDegrees = 90.0;
     const Mesh mesh = buildTubeMesh(tree, turned);
     EXPECT_NEAR((mesh.positions[0].cast<double>() - Vec3(0, 0, -0.1)).norm(), 0.0, 1e-6);
@@ -236,7 +230,7 @@ TEST(TubeRadii, WidthsModeFallsBackToMurrayWithoutAnyWidth) {
 TEST(TubeMesh, CurveReductionDropsRingsOfANearlyStraightChain) {
     std::vector<Vec3> points;
     for (int i = 0; i <= 10; ++i) points.emplace_back(0.005 * (i % 2), i, 0);  // ±0.3° zigzag
-    TubeMeshParams params = fixedSegments(4);
+    TubeMeshParams params = thinTipSegments(4);
     params.curveReduction = 0.999;  // cos 2.6°
     EXPECT_EQ(buildTubeMesh(chainTree(points), params).vertexCount(), 2u * 5u);
     params.curveReduction = 0.0;
@@ -249,7 +243,7 @@ TEST(TubeMesh, CurveReductionKeepsRingsOfABentChain) {
         const double angle = degToRad(30.0 * i);
         points.push_back(points.back() + Vec3(std::sin(angle), std::cos(angle), 0));
     }
-    TubeMeshParams params = fixedSegments(4);
+    TubeMeshParams params = thinTipSegments(4);
     params.curveReduction = 0.999;
     EXPECT_EQ(buildTubeMesh(chainTree(points), params).vertexCount(), 11u * 5u);
 }
@@ -260,7 +254,7 @@ TEST(TubeMesh, CurveReductionMeasuresFromTheLastKeptRingSoSlowArcsKeepSomeRings)
         const double angle = degToRad(1.0 * i);
         points.push_back(points.back() + Vec3(std::sin(angle), std::cos(angle), 0));
     }
-    TubeMeshParams params = fixedSegments(4);
+    TubeMeshParams params = thinTipSegments(4);
     params.curveReduction = std::cos(degToRad(5.0));
     const std::size_t rings = buildTubeMesh(chainTree(points), params).vertexCount() / 5;
     EXPECT_GT(rings, 10u);  // at most ~5° of turn between kept rings
@@ -270,7 +264,7 @@ TEST(TubeMesh, CurveReductionMeasuresFromTheLastKeptRingSoSlowArcsKeepSomeRings)
 TEST(TubeMesh, CoincidentNodesAreMergedWithoutDegenerateTriangles) {
     const BranchTree tree =
         chainTree({Vec3::Zero(), Vec3(0, 1, 0), Vec3(0, 1, 0), Vec3(0, 2, 0), Vec3(0, 2, 0)});
-    const Mesh mesh = buildTubeMesh(tree, fixedSegments(4, true));
+    const Mesh mesh = buildTubeMesh(tree, thinTipSegments(4, true));
     EXPECT_EQ(mesh.vertexCount(), 3u * 5u + 2u * 5u);  // 3 rings + 2 caps of 4 + centre
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const Vec3f a = mesh.positions[mesh.indices[3 * t]];
@@ -305,7 +299,7 @@ void expectClosedManifold(const Mesh& mesh) {
 
 TEST(TubeMesh, CapsCloseASingleEdge) {
     const Mesh mesh =
-        buildTubeMesh(chainTree({Vec3(1, 0, 0), Vec3(1, 2, 1)}), fixedSegments(7, true));
+        buildTubeMesh(chainTree({Vec3(1, 0, 0), Vec3(1, 2, 1)}), thinTipSegments(7, true));
     EXPECT_EQ(mesh.triangleCount(), 14u + 2u * 7u);
     expectClosedManifold(mesh);
     writeForValidator(mesh, "single_edge_capped");
@@ -314,7 +308,7 @@ TEST(TubeMesh, CapsCloseASingleEdge) {
 TEST(TubeMesh, CapsCloseABentChainAndTheirNormalsPointOutward) {
     std::vector<Vec3> points{Vec3::Zero()};
     for (int i = 1; i <= 6; ++i) points.push_back(points.back() + Vec3(0.3 * i, 1, 0.1 * i));
-    const Mesh mesh = buildTubeMesh(chainTree(points), fixedSegments(9, true));
+    const Mesh mesh = buildTubeMesh(chainTree(points), thinTipSegments(9, true));
     expectClosedManifold(mesh);
     // The last vertex is a tip-cap vertex: its normal points along the last edge.
     const Vec3 lastEdge = (points[6] - points[5]).normalized();
@@ -322,7 +316,7 @@ TEST(TubeMesh, CapsCloseABentChainAndTheirNormalsPointOutward) {
 }
 
 TEST(TubeMesh, WithoutCapsTipsStayOpen) {
-    const Mesh mesh = buildTubeMesh(chainTree({Vec3::Zero(), Vec3(0, 1, 0)}), fixedSegments(6));
+    const Mesh mesh = buildTubeMesh(chainTree({Vec3::Zero(), Vec3(0, 1, 0)}), thinTipSegments(6));
     EXPECT_EQ(mesh.triangleCount(), 12u);
 }
 
