@@ -9,14 +9,15 @@
 #include <limits>
 #include <numeric>
 
+#include "ramus/rng.hpp"
 #include "welded_checks.hpp"
 
 namespace ramus {
 namespace {
 
 // Two closed surfaces: the unit cube (12 triangles, outward) and a tetrahedron standing on its
-// apex above the cube's top face, the apex at height `apexZ` over (0.3, 0.4).
-detail::CrossingSurface cubeAndTetrahedron(float apexZ) {
+// apex above the cube's top face, the apex at height `apexZ` over (apexX, apexY).
+detail::CrossingSurface cubeAndTetrahedron(float apexZ, float apexX = 0.3f, float apexY = 0.4f) {
     detail::CrossingSurface s;
     for (int i = 0; i < 8; ++i) {
         s.points.emplace_back(static_cast<float>(i & 1), static_cast<float>((i >> 1) & 1),
@@ -28,8 +29,8 @@ detail::CrossingSurface cubeAndTetrahedron(float apexZ) {
         s.triangles.push_back({q[0], q[1], q[2]});
         s.triangles.push_back({q[0], q[2], q[3]});
     }
-    s.points.emplace_back(0.3f, 0.4f, apexZ);  // 8: apex
-    s.points.emplace_back(0.0f, 0.0f, 2.0f);   // 9, 10, 11: the base above
+    s.points.emplace_back(apexX, apexY, apexZ);  // 8: apex
+    s.points.emplace_back(0.0f, 0.0f, 2.0f);     // 9, 10, 11: the base above
     s.points.emplace_back(0.9f, 0.1f, 2.0f);
     s.points.emplace_back(0.2f, 0.9f, 2.0f);
     // Base facing up (counter-clockwise from above), sides facing out.
@@ -85,6 +86,28 @@ TEST(CrossingRepair, GrazingCrossingIsSeparatedByFloatSteps) {
     const test::Topology top = test::analyzeTopology(meshOf(s));
     EXPECT_TRUE(top.closedOriented);
     EXPECT_NEAR(test::signedVolume(meshOf(s)), test::signedVolume(meshOf(start)), 1e-5);
+}
+
+// Grazes at random places of the top face (both of its triangles and near their shared
+// diagonal), 1–8 float steps deep: every one is separated, within a hundred steps.
+TEST(CrossingRepair, RandomGrazesAreSeparated) {
+    const float ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
+    Rng rng(17);
+    for (int trial = 0; trial < 40; ++trial) {
+        SCOPED_TRACE(trial);
+        const auto x = static_cast<float>(rng.uniform(0.15, 0.85));
+        const auto y = static_cast<float>(rng.uniform(0.15, 0.85));
+        const auto depth = static_cast<float>(1 + rng.uniformInt(8));
+        const detail::CrossingSurface start = cubeAndTetrahedron(1.0f - depth * ulp, x, y);
+        ASSERT_GT(test::countSelfIntersections(meshOf(start), 100), 0u);
+        detail::CrossingSurface s = start;
+        const detail::CrossingRepair repair =
+            detail::separateCrossings(s, cubeTetrahedronPairs(), kMaxMove);
+        EXPECT_EQ(repair.pairsLeft, 0u);
+        EXPECT_EQ(test::countSelfIntersections(meshOf(s), 100), 0u);
+        EXPECT_LE(largestMove(start, s), 100.0 * ulp);  // a cube corner may need 64 steps
+        EXPECT_TRUE(test::analyzeTopology(meshOf(s)).closedOriented);
+    }
 }
 
 // A real crossing (the apex 0.1 deep in the cube) is not the rounding's: no move within the
