@@ -36,7 +36,8 @@ struct SolidUnionReport {
     /// cross. The best of the attempts is kept.
     std::size_t remainingIntersections = 0;
     /// Corners moved a few float steps (at most 1e-5 of the extent) to separate triangle pairs
-    /// that rounding made cross; remainingIntersections counts what is left after.
+    /// that rounding made cross, or sheets it pinched together along an edge;
+    /// remainingIntersections and pinchedEdges count what is left after.
     std::size_t crossingMoves = 0;
     /// Edges of the result (welded by position) where k > 1 sheets meet, each sheet using the
     /// edge once each way: sheets the cut left closer than float resolution, pinched together
@@ -61,7 +62,8 @@ struct SolidUnionReport {
 /// position) as often in one direction as in the other; rounding the cut positions to float
 /// can break that, pinch sheets together along an edge or make grazing surfaces cross. The
 /// corners of crossing pairs are moved apart by a few float steps (at most 1e-5 of the extent,
-/// report->crossingMoves) where that lowers the crossings and turns no triangle over; up
+/// report->crossingMoves) where that lowers the crossings and turns no triangle over, and the
+/// corners of pinched sheets into their own solid where that adds no crossing; up
 /// to three moves (1e-5, 3e-5, 1e-4) are tried and the first result without crossings and
 /// pinched edges, else the one with the fewest of both, is kept
 /// (report->remainingIntersections, report->pinchedEdges). On any failure (input not closed, a

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace ramus::detail {
@@ -36,6 +38,7 @@ class Separator {
 public:
     Separator(CrossingSurface& surface, double maxMove);
     CrossingRepair run(std::span<const TrianglePair> crossing);
+    CrossingRepair unpinchAll(std::span<const std::uint32_t> vertices);
 
 private:
     Triangle triangle(std::uint32_t t) const;
@@ -43,9 +46,13 @@ private:
     bool degenerate(std::uint32_t t) const;
     bool sharePosition(std::uint32_t f, std::uint32_t g) const;
     bool cross(std::uint32_t f, std::uint32_t g) const;
-    std::size_t crossingsAround(std::uint32_t v);
+    std::size_t crossingsAround(std::uint32_t v, std::vector<TrianglePair>* pairs = nullptr);
     bool turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const;
-    bool separate(std::uint32_t v, const Vec3& partnerNormal);
+    bool separate(std::uint32_t v, std::uint32_t partner);
+    bool unpinch(std::uint32_t v);
+    bool tryMoves(std::uint32_t v, std::size_t most);
+    Vec3 vertexNormal(std::uint32_t v);
+    void addDirection(const Vec3& d);
 
     CrossingSurface& s_;
     double maxMove_;
@@ -110,9 +117,10 @@ bool Separator::cross(std::uint32_t f, std::uint32_t g) const {
     return CGAL::do_intersect(triangle(f), triangle(g));
 }
 
-// Crossing pairs with one of v's triangles. Every vertex stays within maxMove of where it was,
-// so a triangle meeting one of v's triangles now was, as stored, within maxMove of its box.
-std::size_t Separator::crossingsAround(std::uint32_t v) {
+// Crossing pairs with one of v's triangles (appended to `pairs` when given). Every vertex stays
+// within maxMove of where it was, so a triangle meeting one of v's triangles now was, as stored,
+// within maxMove of its box.
+std::size_t Separator::crossingsAround(std::uint32_t v, std::vector<TrianglePair>* pairs) {
     std::size_t count = 0;
     for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
         const std::uint32_t f = around_[i];
@@ -124,7 +132,9 @@ std::size_t Separator::crossingsAround(std::uint32_t v) {
         tree_.all_intersected_primitives(box, std::back_inserter(hits_));
         for (const auto& hit : hits_) {
             const auto g = static_cast<std::uint32_t>(hit - stored_.cbegin());
-            if (g != f && cross(f, g)) ++count;
+            if (g == f || !cross(f, g)) continue;
+            ++count;
+            if (pairs != nullptr) pairs->emplace_back(std::min(f, g), std::max(f, g));
         }
     }
     return count;
@@ -139,70 +149,114 @@ bool Separator::turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before
     return true;
 }
 
-// Tries moves of v, smallest first: 1, 2, 4, … float steps along its normal, the partner
-// triangle's, towards its neighbours and along the axes, both ways; keeps the first that lowers
-// the crossings around v.
-bool Separator::separate(std::uint32_t v, const Vec3& partnerNormal) {
-    const std::size_t before = crossingsAround(v);
-    if (before == 0) return false;
-    normals_.clear();
-    Vec3 vertexNormal = Vec3::Zero();
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
-        normals_.push_back(normal(around_[i]));
-        vertexNormal += normals_.back();
-    }
+// Tries moves of v in directions_, smallest first (1, 2, 4, … float steps, each direction in
+// turn), and keeps the first that turns no triangle of v over and leaves at most `most`
+// crossings around v. normals_ holds the normals of v's triangles before the move.
+bool Separator::tryMoves(std::uint32_t v, std::size_t most) {
     const Vec3f start = s_.points[v];
     const Vec3 p = start.cast<double>();
-    // Off the sheets first (normals); then towards the middle of the vertex's neighbours, which
-    // widens a sliver, and along the axes.
-    Vec3 middle = Vec3::Zero();
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
-        for (std::uint32_t w : s_.triangles[around_[i]]) middle += s_.points[w].cast<double>();
-    }
-    middle /= 3.0 * (first_[v + 1] - first_[v]);
-    directions_.clear();
-    for (const Vec3& d : {vertexNormal, partnerNormal, Vec3(middle - p), Vec3(Vec3::UnitX()),
-                          Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ())}) {
-        if (d.norm() > 0.0) {
-            directions_.push_back(d.normalized());
-            directions_.push_back(-d.normalized());
-        }
-    }
-    const double ulp = ulpAt(start);
-    for (double step = ulp; step <= maxMove_; step *= 2.0) {
+    for (double step = ulpAt(start); step <= maxMove_; step *= 2.0) {
         for (const Vec3& d : directions_) {
             const Vec3f q = (p + step * d).cast<float>();
             if (q == start || (q - original_[v]).cast<double>().norm() > maxMove_) continue;
             s_.points[v] = q;
-            if (turnsNoTriangle(v, normals_) && crossingsAround(v) < before) return true;
+            if (turnsNoTriangle(v, normals_) && crossingsAround(v) <= most) return true;
             s_.points[v] = start;
         }
     }
     return false;
 }
 
+// Fills normals_ with the normals of v's triangles and returns their sum (v's normal).
+Vec3 Separator::vertexNormal(std::uint32_t v) {
+    normals_.clear();
+    Vec3 sum = Vec3::Zero();
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+        normals_.push_back(normal(around_[i]));
+        sum += normals_.back();
+    }
+    return sum;
+}
+
+// Adds d and −d to directions_ (a zero d adds nothing).
+void Separator::addDirection(const Vec3& d) {
+    if (!(d.norm() > 0.0)) return;
+    directions_.push_back(d.normalized());
+    directions_.push_back(-d.normalized());
+}
+
+// A move of v that lowers the crossings around it: off the sheets first (v's normal, the
+// partner triangle's), then towards the middle of v's neighbours (which widens a sliver), away
+// from the partner's corners (a corner of another sheet a rounding error away), along the axes.
+bool Separator::separate(std::uint32_t v, std::uint32_t partner) {
+    const std::size_t before = crossingsAround(v);
+    if (before == 0) return false;
+    directions_.clear();
+    addDirection(vertexNormal(v));
+    addDirection(normal(partner));
+    const Vec3 p = s_.points[v].cast<double>();
+    Vec3 middle = Vec3::Zero();
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+        for (std::uint32_t w : s_.triangles[around_[i]]) middle += s_.points[w].cast<double>();
+    }
+    addDirection(middle / (3.0 * (first_[v + 1] - first_[v])) - p);
+    for (std::uint32_t w : s_.triangles[partner]) addDirection(p - s_.points[w].cast<double>());
+    for (int axis = 0; axis < 3; ++axis) addDirection(Vec3::Unit(axis));
+    return tryMoves(v, before - 1);
+}
+
+// A move of v, a corner of a sheet that rounding pinched to another along an edge, off that
+// position: into its own solid first (−normal), which opens a gap to the other sheet, then out;
+// no more crossings around v than before.
+bool Separator::unpinch(std::uint32_t v) {
+    const std::size_t before = crossingsAround(v);
+    directions_.clear();
+    const Vec3 inward = -vertexNormal(v);
+    if (!(inward.norm() > 0.0)) return false;
+    directions_.push_back(inward.normalized());
+    directions_.push_back(-inward.normalized());
+    return tryMoves(v, before);
+}
+
+CrossingRepair Separator::unpinchAll(std::span<const std::uint32_t> vertices) {
+    CrossingRepair repair;
+    for (std::uint32_t v : vertices) {
+        if ((s_.fixed.empty() || !s_.fixed[v]) && unpinch(v)) ++repair.movedVertices;
+    }
+    return repair;
+}
+
+// Rounds over the pairs still to separate. A move is kept when it lowers the crossings around
+// its vertex in all, so it may have made new pairs there (a corner that parts from a position
+// it shared with another sheet): those join the list for the next round.
 CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
     CrossingRepair repair;
-    for (int round = 0; round < 4; ++round) {
-        bool moved = false;
-        for (const auto& [f, g] : crossing) {
+    std::vector<TrianglePair> pending(crossing.begin(), crossing.end());
+    std::vector<TrianglePair> made;
+    for (int round = 0; round < 8; ++round) {
+        made.clear();
+        for (const auto& [f, g] : pending) {
             for (int side = 0; side < 2 && cross(f, g); ++side) {
                 const std::uint32_t mine = side == 0 ? f : g;
-                const Vec3 partnerNormal = normal(side == 0 ? g : f);
+                const std::uint32_t partner = side == 0 ? g : f;
                 for (std::uint32_t v : s_.triangles[mine]) {
-                    if ((!s_.fixed.empty() && s_.fixed[v]) || !separate(v, partnerNormal)) {
+                    if ((!s_.fixed.empty() && s_.fixed[v]) || !separate(v, partner)) {
                         continue;
                     }
                     ++repair.movedVertices;
-                    moved = true;
+                    crossingsAround(v, &made);
                     if (!cross(f, g)) break;
                 }
             }
         }
-        if (!moved) break;
+        if (made.empty()) break;
+        pending.insert(pending.end(), made.begin(), made.end());
+        std::sort(pending.begin(), pending.end());
+        pending.erase(std::unique(pending.begin(), pending.end()), pending.end());
+        std::erase_if(pending, [&](const TrianglePair& p) { return !cross(p.first, p.second); });
     }
     repair.pairsLeft = static_cast<std::size_t>(
-        std::count_if(crossing.begin(), crossing.end(),
+        std::count_if(pending.begin(), pending.end(),
                       [&](const TrianglePair& p) { return cross(p.first, p.second); }));
     return repair;
 }
@@ -213,6 +267,12 @@ CrossingRepair separateCrossings(CrossingSurface& surface, std::span<const Trian
                                  double maxMove) {
     if (crossing.empty()) return {};
     return Separator(surface, maxMove).run(crossing);
+}
+
+CrossingRepair unpinchVertices(CrossingSurface& surface, std::span<const std::uint32_t> vertices,
+                               double maxMove) {
+    if (vertices.empty()) return {};
+    return Separator(surface, maxMove).unpinchAll(vertices);
 }
 
 }  // namespace ramus::detail

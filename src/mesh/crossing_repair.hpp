@@ -35,7 +35,8 @@ using TrianglePair = std::pair<std::uint32_t, std::uint32_t>;
 /// What separateCrossings did.
 struct CrossingRepair {
     std::size_t movedVertices = 0;  ///< moves made (a vertex may move more than once)
-    std::size_t pairsLeft = 0;      ///< of the given pairs, those that still cross
+    std::size_t pairsLeft =
+        0;  ///< of the given pairs and those moves made, the ones still crossing
 };
 
 /// Moves corners of the crossing pairs `crossing` (triangles that intersect and share no
@@ -46,5 +47,12 @@ struct CrossingRepair {
 /// the other triangle's normal, both ways. Deterministic.
 CrossingRepair separateCrossings(CrossingSurface& surface, std::span<const TrianglePair> crossing,
                                  double maxMove);
+
+/// Moves each of `vertices` (corners of sheets that rounding pinched to another sheet along an
+/// edge: the same positions, other surface vertices) a few float steps off that position, into
+/// its own solid first, at most `maxMove`, where that adds no crossing around it and turns no
+/// triangle over. CrossingRepair::pairsLeft stays 0. Deterministic.
+CrossingRepair unpinchVertices(CrossingSurface& surface, std::span<const std::uint32_t> vertices,
+                               double maxMove);
 
 }  // namespace ramus::detail

@@ -24,8 +24,10 @@
 //    (once each way, or k times where rounding pinched k sheets together along it: counted).
 //    Pockets (closed components of negative volume) are filled, with any piece inside one.
 // 6. Rounding to float can make grazing surfaces cross (CGAL's exact self-intersection test on
-//    the floats): the corners of each crossing pair are moved a few float steps apart, where
-//    that lowers the crossings and turns no triangle over (crossing_repair.hpp).
+//    the floats) or pinch two sheets together along an edge: the corners of each crossing pair
+//    are moved a few float steps apart, where that lowers the crossings and turns no triangle
+//    over, and then one sheet's corners at a pinched edge into its own solid, where that adds
+//    no crossing (crossing_repair.hpp).
 // 7. Rounding can also break the check: up to three moves are tried, and the first result
 //    without crossings or pinched edges, else the one with the fewest of both, replaces the
 //    mesh.
@@ -782,13 +784,10 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
 // triangle, docs/welded.md).
 constexpr double kSeparationMove = 1e-5;
 
-// 6. Separates the pairs `crossing` of the closed surfaces `surfaces` of `mesh` by moving their
-// corners a few float steps (crossing_repair.hpp); all copies of a surface vertex move together,
-// and a mesh vertex that belongs to several surface vertices stays. Returns the pairs left,
-// counted again over the whole mesh; `report` gets the moves and the pinched edges.
-std::vector<detail::TrianglePair> separateRoundedCrossings(
-    Mesh& mesh, const Surfaces& surfaces, const std::vector<detail::TrianglePair>& crossing,
-    SolidUnionReport& report) {
+// The closed surfaces `surfaces` of `mesh` as surface vertices and triangles for
+// crossing_repair.hpp: all copies of a surface vertex move together, and a mesh vertex that
+// belongs to several surface vertices stays.
+detail::CrossingSurface crossingSurfaceOf(const Mesh& mesh, const Surfaces& surfaces) {
     const std::vector<std::uint32_t>& fan = surfaces.fan;
     detail::CrossingSurface surface;
     surface.points.resize(surfaces.vertices);
@@ -804,21 +803,73 @@ std::vector<detail::TrianglePair> separateRoundedCrossings(
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         surface.triangles[t] = {fan[3 * t], fan[3 * t + 1], fan[3 * t + 2]};
     }
-    const double maxMove = kSeparationMove * mesh.bounds().extent().maxCoeff();
-    const detail::CrossingRepair repair = detail::separateCrossings(surface, crossing, maxMove);
-    if (repair.movedVertices == 0) return crossing;
+    return surface;
+}
+
+// Writes the moved points of `surface` (crossingSurfaceOf(mesh, surfaces)) into `mesh` and
+// replaces `surfaces` by the new ones; a result that is no longer closed (a move joined two
+// positions) is not taken: false, both unchanged.
+bool takeMoves(Mesh& mesh, Surfaces& surfaces, const detail::CrossingSurface& surface) {
     const std::vector<Vec3f> before = mesh.positions;
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
-        mesh.positions[mesh.indices[c]] = surface.points[fan[c]];
+        mesh.positions[mesh.indices[c]] = surface.points[surfaces.fan[c]];
     }
-    const Surfaces moved = surfacesOf(mesh);
-    if (!moved.closed) {  // a move joined two positions: keep the surface as it was
+    Surfaces moved = surfacesOf(mesh);
+    if (!moved.closed) {
         mesh.positions = before;
-        return crossing;
+        return false;
     }
-    report.crossingMoves = repair.movedVertices;
-    report.pinchedEdges = moved.pinchedEdges;
-    return crossingPairs(mesh, moved);
+    surfaces = std::move(moved);
+    return true;
+}
+
+// Surface vertices at pinched edges (closed `surfaces`): at each edge where k > 1 sheets meet,
+// the two corners of every sheet but the first.
+std::vector<std::uint32_t> pinchedSheetCorners(const Mesh& mesh, const Surfaces& surfaces) {
+    const std::vector<DirectedEdge> edges = directedEdges(surfaces.weld, mesh.indices);
+    std::vector<std::uint32_t> vertices;
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
+        if (j - i > 1 && edges[i].welded < reversed(edges[i].welded)) {
+            for (std::size_t k = i + 1; k < j; ++k) {
+                vertices.push_back(surfaces.fan[edges[k].corner]);
+                vertices.push_back(surfaces.fan[nextCorner(edges[k].corner)]);
+            }
+        }
+        i = j;
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+}
+
+// 6. Moves corners a few float steps (crossing_repair.hpp) to separate the crossing pairs of the
+// closed surfaces `surfaces` of `mesh`, then to part sheets pinched together along an edge;
+// `report` gets the moves and what is left: crossings (counted again over the whole mesh) and
+// pinched edges.
+void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, SolidUnionReport& report) {
+    const double maxMove = kSeparationMove * mesh.bounds().extent().maxCoeff();
+    std::vector<detail::TrianglePair> crossing = crossingPairs(mesh, surfaces);
+    if (!crossing.empty()) {
+        detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
+        const detail::CrossingRepair repair = detail::separateCrossings(surface, crossing, maxMove);
+        if (repair.movedVertices > 0 && takeMoves(mesh, surfaces, surface)) {
+            report.crossingMoves += repair.movedVertices;
+            crossing = crossingPairs(mesh, surfaces);
+        }
+    }
+    if (surfaces.pinchedEdges > 0) {
+        detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
+        const std::vector<std::uint32_t> corners = pinchedSheetCorners(mesh, surfaces);
+        const detail::CrossingRepair repair = detail::unpinchVertices(surface, corners, maxMove);
+        if (repair.movedVertices > 0 && takeMoves(mesh, surfaces, surface)) {
+            report.crossingMoves += repair.movedVertices;
+            crossing = crossingPairs(mesh, surfaces);
+        }
+    }
+    report.remainingIntersections = crossing.size();
+    report.pinchedEdges = surfaces.pinchedEdges;
 }
 
 // What makes a result less than one clean 2-manifold: crossing triangle pairs and pinched edges.
@@ -857,12 +908,7 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
         r.failure = attempt.failure;
         if (outcome == Outcome::badInput) return false;
         if (outcome != Outcome::done) continue;
-        const Surfaces result = surfacesOf(trial);
-        attempt.pinchedEdges = result.pinchedEdges;
-        std::vector<detail::TrianglePair> crossing = crossingPairs(trial, result);
-        if (!crossing.empty())
-            crossing = separateRoundedCrossings(trial, result, crossing, attempt);
-        attempt.remainingIntersections = crossing.size();
+        separateRoundingDefects(trial, surfacesOf(trial), attempt);
         if (!best || defects(attempt) < defects(bestReport)) {
             best = std::move(trial);
             bestReport = attempt;

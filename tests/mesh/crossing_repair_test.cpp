@@ -135,5 +135,38 @@ TEST(CrossingRepair, FixedVerticesStay) {
     EXPECT_EQ(largestMove(start, s), 0.0);
 }
 
+// Two unit cubes sharing an edge exactly, each with its own corners there (a pinched edge, as
+// rounding leaves where two sheets touch): the second cube's two corners on the edge move a few
+// float steps into their own cube, so the cubes no longer share a position; nothing crosses.
+TEST(CrossingRepair, PinchedCornersMoveIntoTheirOwnSolid) {
+    detail::CrossingSurface start = cubeAndTetrahedron(3.0f);  // the cube, and a far tetrahedron
+    const auto base = static_cast<std::uint32_t>(start.points.size());
+    for (int i = 0; i < 8; ++i) {  // the cube [1, 2] x [1, 2] x [0, 1]
+        start.points.emplace_back(static_cast<float>(1 + (i & 1)),
+                                  static_cast<float>(1 + ((i >> 1) & 1)),
+                                  static_cast<float>((i >> 2) & 1));
+    }
+    for (std::size_t t = 0; t < 12; ++t) {
+        const auto& c = start.triangles[t];
+        start.triangles.push_back({base + c[0], base + c[1], base + c[2]});
+    }
+    // Corners 0 (1, 1, 0) and 4 (1, 1, 1) of the second cube are corners 3 and 7 of the first.
+    const std::vector<std::uint32_t> pinched = {base + 0, base + 4};
+    ASSERT_EQ(start.points[base + 0], start.points[3]);
+    detail::CrossingSurface s = start;
+    const detail::CrossingRepair repair = detail::unpinchVertices(s, pinched, kMaxMove);
+    EXPECT_EQ(repair.movedVertices, 2u);
+    const float ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
+    for (std::uint32_t v : pinched) {
+        EXPECT_NE(s.points[v], start.points[v]);
+        EXPECT_LE((s.points[v] - start.points[v]).cast<double>().norm(), 8.0 * ulp);
+        EXPECT_GT(s.points[v].x(), 1.0f);  // into the second cube
+        EXPECT_GT(s.points[v].y(), 1.0f);
+    }
+    for (std::uint32_t v = 0; v < base; ++v) EXPECT_EQ(s.points[v], start.points[v]);
+    EXPECT_EQ(test::countSelfIntersections(meshOf(s), 100), 0u);
+    EXPECT_TRUE(test::analyzeTopology(meshOf(s)).closedOriented);
+}
+
 }  // namespace
 }  // namespace ramus
