@@ -48,6 +48,7 @@ private:
     bool turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const;
     bool separate(std::uint32_t v, std::uint32_t partner);
     bool unpinch(std::uint32_t v);
+    bool movable(std::uint32_t v) const { return s_.fixed.empty() || !s_.fixed[v]; }
     bool tryMoves(std::uint32_t v, std::size_t most);
     Vec3 vertexNormal(std::uint32_t v);
     void addDirection(const Vec3& d);
@@ -209,17 +210,14 @@ bool Separator::separate(std::uint32_t v, std::uint32_t partner) {
 bool Separator::unpinch(std::uint32_t v) {
     const std::size_t before = crossingsAround(v);
     directions_.clear();
-    const Vec3 inward = -vertexNormal(v);
-    if (!(inward.norm() > 0.0)) return false;
-    directions_.push_back(inward.normalized());
-    directions_.push_back(-inward.normalized());
-    return tryMoves(v, before);
+    addDirection(-vertexNormal(v));
+    return !directions_.empty() && tryMoves(v, before);
 }
 
 CrossingRepair Separator::unpinchAll(std::span<const std::uint32_t> vertices) {
     CrossingRepair repair;
     for (std::uint32_t v : vertices) {
-        if ((s_.fixed.empty() || !s_.fixed[v]) && unpinch(v)) ++repair.movedVertices;
+        if (movable(v) && unpinch(v)) ++repair.movedVertices;
     }
     return repair;
 }
@@ -238,9 +236,7 @@ CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
                 const std::uint32_t mine = side == 0 ? f : g;
                 const std::uint32_t partner = side == 0 ? g : f;
                 for (std::uint32_t v : s_.triangles[mine]) {
-                    if ((!s_.fixed.empty() && s_.fixed[v]) || !separate(v, partner)) {
-                        continue;
-                    }
+                    if (!movable(v) || !separate(v, partner)) continue;
                     ++repair.movedVertices;
                     crossingsAround(v, &made);
                     if (!cross(f, g)) break;
