@@ -28,6 +28,7 @@ void BM_WeldedMesh(benchmark::State& state, BranchTree (*makeTree)(std::int64_t)
     }
     ramus::bench::reportMesh(state, tree, mesh);
     state.counters["junctions"] = static_cast<double>(report.junctions);
+    state.counters["shrunk"] = static_cast<double>(report.refinedJunctions);
 }
 
 BENCHMARK_CAPTURE(BM_WeldedMesh, binary, ramus::bench::binaryTree)

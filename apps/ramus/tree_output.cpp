@@ -118,6 +118,7 @@ void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
     if (report.weldedMeshes > 0) {
         stats["weld_fallbacks"] = report.weldFallbacks;
         stats["weld_crossings"] = report.weldCrossings;
+        stats["weld_shrunk_junctions"] = report.shrunkJunctions;
     }
     if (report.unionsApplied + report.unionsFailed > 0) {
         stats["unions_applied"] = report.unionsApplied;
@@ -301,6 +302,9 @@ void addAssetOptions(CLI::App& command, AssetOptions& o) {
     command.add_flag("--union", o.solidUnion,
                      "with --weld (implied): unite the welded pieces and self-crossing branches "
                      "into one surface without self-intersections (docs/welded.md; slower)");
+    command.add_flag("--convex-junctions", o.convexJunctions,
+                     "with --weld: keep each junction the convex hull of its rings (fewer "
+                     "triangles; webs over crotches where branches leave at small angles)");
     command
         .add_option("--uv-aspect", o.uvAspect,
                     "bark texture height / width (default: the built-in texture's, 2)")
@@ -335,6 +339,7 @@ AssetSettings applyAssetOptions(const TubeMeshParams& tube, const AssetOptions& 
     if (!o.lods.empty()) s.lods = parseLodRatios(o.lods);
     if (c.count("--weld")) s.mesh.weldJunctions = true;
     if (c.count("--union")) s.mesh.weldJunctions = s.mesh.solidUnion = true;
+    if (c.count("--convex-junctions")) s.mesh.convexJunctions = true;
     return finishAssets(std::move(s));
 }
 
@@ -349,6 +354,7 @@ AssetSettings configAssets(const ColonizeConfig& config) {
     if (m.hasTextures) s.textures = m.textures;
     s.mesh.weldJunctions = (m.hasWeld && m.weld) || (m.hasSolidUnion && m.solidUnion);
     s.mesh.solidUnion = m.hasSolidUnion && m.solidUnion;
+    s.mesh.convexJunctions = m.hasConvexJunctions && m.convexJunctions;
     s.lods = m.lods;
     s.mesh.leaves = config.hasLeaves;
     if (config.hasLeaves) s.mesh.leaf = config.leaves;
@@ -370,6 +376,12 @@ AssetSettings finishAssets(AssetSettings s) {
     validateLeafParams(s.mesh.leaf);
     // Before any growing or meshing: a build without CGAL says so at once.
     if (s.mesh.solidUnion && !solidUnionAvailable()) throw Error(std::string(kSolidUnionMissing));
+    if (s.mesh.convexJunctions && !s.mesh.weldJunctions) {
+        throw Error(
+            "convex junctions are welded junctions kept as hulls: expected --weld or "
+            "--union with --convex-junctions (\"weld\": true with "
+            "\"convex_junctions\" in a config)");
+    }
     if (s.textures) {
         const TreeTextures& t = defaultTextures();
         Material& bark = s.mesh.tube.material;

@@ -60,6 +60,7 @@ struct AssetOptions {
     double uvAspect = 1.0;
     std::string lods;  ///< "1,0.4,0.15"
     bool leaves = false, wind = false, noTextures = false, weld = false, solidUnion = false;
+    bool convexJunctions = false;
     CLI::App* command = nullptr;
 };
 

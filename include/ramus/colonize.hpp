@@ -116,15 +116,17 @@ struct ColonizeConfig {
         bool hasLeafRadius = false, hasRadiusExponent = false, hasTrunkMultiplier = false;
         bool hasMinSegments = false, hasMaxSegments = false, hasCapTips = false;
         bool hasUvAspect = false, hasWind = false, hasTextures = false, hasWeld = false;
-        bool hasSolidUnion = false;
+        bool hasSolidUnion = false, hasConvexJunctions = false;
         double leafRadius = 0.0, radiusExponent = 2.0, trunkMultiplier = 1.0;
         int minSegments = 4, maxSegments = 16;
         bool capTips = true;
-        double uvAspect = 1.0;     ///< "uv_aspect": bark texture height / width
-        bool wind = false;         ///< "wind": write the wind attributes
-        bool textures = true;      ///< "textures": embed the procedural bark and leaf textures
-        bool weld = false;         ///< "weld": welded junctions (one closed surface per tree)
-        bool solidUnion = false;   ///< "union": united welded bark (implies weld)
+        double uvAspect = 1.0;    ///< "uv_aspect": bark texture height / width
+        bool wind = false;        ///< "wind": write the wind attributes
+        bool textures = true;     ///< "textures": embed the procedural bark and leaf textures
+        bool weld = false;        ///< "weld": welded junctions (one closed surface per tree)
+        bool solidUnion = false;  ///< "union": united welded bark (implies weld)
+        /// "convex_junctions": welded junctions kept as convex hulls (not shrunk)
+        bool convexJunctions = false;
         std::vector<double> lods;  ///< "lods": triangle ratios of the levels; empty = no LODs
     } mesh;
 

@@ -34,6 +34,10 @@ struct TreeMeshParams {
     /// welder leaves overlapping pieces. Seconds for 10⁵ triangles, so LODs are planned on the
     /// welded counts and only the final levels are united.
     bool solidUnion = false;
+    /// With weldJunctions: keep every junction the convex hull of its rings
+    /// (WeldedMeshParams::shrinkJunctions off): fewer triangles, but webs over the crotches
+    /// where several branches leave at small angles.
+    bool convexJunctions = false;
     bool leaves = false;  ///< generate leaves (buildLeafMesh) besides the polygons
     LeafParams leaf;      ///< generated leaves, and the atlas, seed and LOD keep of the polygons
     /// The `{ . }` polygons' material (their primitive is named after it): they have their own
@@ -49,9 +53,10 @@ struct TreeMeshReport {
     /// capped tubes: the surface is several overlapping pieces) and ::crossings (limbs too
     /// short for both their rings: the surface intersects itself there).
     std::size_t weldFallbacks = 0, weldCrossings = 0;
-    std::size_t unionsApplied = 0;  ///< tree meshes replaced by their union's surface
-    std::size_t unionsFailed = 0;   ///< tree meshes left welded (overlapping), see firstFailure
-    std::string firstFailure;       ///< SolidUnionReport::failure of the first failed one
+    std::size_t shrunkJunctions = 0;  ///< WeldReport::refinedJunctions over them
+    std::size_t unionsApplied = 0;    ///< tree meshes replaced by their union's surface
+    std::size_t unionsFailed = 0;     ///< tree meshes left welded (overlapping), see firstFailure
+    std::string firstFailure;         ///< SolidUnionReport::failure of the first failed one
     /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges and
     /// ::crossingMoves.
     std::size_t crossingsLeft = 0, pinchedEdges = 0, crossingMoves = 0;

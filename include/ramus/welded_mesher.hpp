@@ -27,6 +27,10 @@ struct WeldedMeshParams {
     /// autorefinement, about 50 k triangles/s; docs/welded.md, "Solid union"); junction
     /// triangles are then no longer the last ones of the index buffer.
     bool solidUnion = false;
+    /// Junctions whose convex hull spans far past the branches (a web over a crotch where
+    /// several branches leave at small angles) are subdivided and shrunk onto the branches'
+    /// filleted surface, staying free of self-intersections (docs/welded.md, "Junctions").
+    bool shrinkJunctions = true;
 };
 
 /// What the welder did, for tests and --stats.
@@ -47,6 +51,7 @@ struct WeldReport {
     /// Branch nodes the hull of their rings left (nearly) bare, as where branches fold back
     /// along their parent, closed over by a ball of the thickest branch's radius.
     std::size_t nodeBalls = 0;
+    std::size_t refinedJunctions = 0;  ///< junctions shrunk onto their branches
     std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
     /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).
     std::size_t junctionTriangles = 0;

@@ -69,6 +69,9 @@ void parseMeshAssetKeys(const ConfigReader& r, const Json& j, ColonizeConfig::Me
                    "\"weld\" key, got \"weld\": false");
         }
     }
+    if ((m.hasConvexJunctions = j.contains("convex_junctions"))) {
+        m.convexJunctions = r.boolean(j["convex_junctions"], "mesh.convex_junctions");
+    }
     if (j.contains("lods")) {
         const Json& list = j["lods"];
         if (!list.is_array() || list.empty() || list.size() > 16) {

@@ -175,7 +175,7 @@ void parseMesh(const ConfigReader& r, const Json& j, ColonizeConfig::MeshOverrid
     r.checkKeys(
         j, "mesh",
         {"leaf_radius", "radius_exponent", "trunk_multiplier", "min_segments", "max_segments",
-         "cap_tips", "uv_aspect", "wind", "textures", "weld", "union", "lods"},
+         "cap_tips", "uv_aspect", "wind", "textures", "weld", "union", "convex_junctions", "lods"},
         "");
     colonize_detail::parseMeshAssetKeys(r, j, m);
     const double kMax = ConfigReader::kMax;

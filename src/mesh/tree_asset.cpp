@@ -61,12 +61,14 @@ public:
         WeldedMeshParams welded;
         welded.tube = tube;
         welded.solidUnion = d.solidUnion;
+        welded.shrinkJunctions = !params_.convexJunctions;
         WeldReport weld;
         Mesh mesh = buildWeldedTreeMesh(tree, welded, &weld);
         if (d.reported && report_ != nullptr) {
             ++report_->weldedMeshes;
             report_->weldFallbacks += weld.fallbacks;
             report_->weldCrossings += weld.crossings;
+            report_->shrunkJunctions += weld.refinedJunctions;
         }
         if (d.solidUnion && report_ != nullptr) {
             if (weld.solidUnion.applied) {

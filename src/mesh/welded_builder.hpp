@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "ramus/mesh.hpp"
 #include "ramus/tree_wind.hpp"
 #include "ramus/welded_mesher.hpp"
 #include "ring_frames.hpp"
+#include "segment_grid.hpp"
 #include "welded_hull.hpp"
 #include "welded_skeleton.hpp"
 
@@ -24,6 +26,29 @@ struct RingRecord {
     Vec3 outward = Vec3::Zero();  ///< unit, away from the junction (or the limb's direction)
     double radius = 0.0;
     WindSample wind;  ///< of every vertex of the ring (and of caps made from it)
+};
+
+/// The branches around a junction as tapered capsules, for shrinking its hull onto them
+/// (welded_junction_refine.cpp).
+struct JunctionShape {
+    struct Capsule {
+        Vec3 a, b;
+        double ra, rb;
+        struct Point {
+            Vec3 offset;    ///< from the nearest axis point to the query point
+            double radius;  ///< the capsule's radius there
+        };
+        /// The axis point nearest to `p` (tapered radius linear along the axis).
+        Point nearest(const Vec3& p) const;
+    };
+    std::vector<Capsule> capsules;
+    double thinnest = 0.0;  ///< radius of the junction's thinnest arm
+    double fillet = 0.0;    ///< blend width of the smooth minimum
+    /// Signed distance to the union of the capsules, smoothed by the fillet (< 0 inside);
+    /// `gradient` (optional) receives its direction of steepest ascent (about unit length).
+    double distance(const Vec3& p, Vec3* gradient = nullptr) const;
+    /// How far `p` lies outside the capsules (without the fillet), in radii of the nearest.
+    double outsideBy(const Vec3& p) const;
 };
 
 class WeldBuilder {
@@ -61,6 +86,12 @@ private:
     bool addNodeBalls();
     void fallbackJunction();
     std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
+
+    // welded_junction_refine.cpp
+    void refineJunction(std::size_t firstIndex);
+    bool gatherJunctionShape(const Vec3& centre, double reach);
+    bool onArmRingEdge(std::uint32_t a, std::uint32_t b) const;
+    bool hasCrossingArm() const;
 
     const WeldedMeshParams& params_;
     WeldSkeleton skeleton_;
@@ -106,6 +137,9 @@ private:
     std::vector<std::int32_t> pointIndex_;  // per hull point: vertex in its ring, -1 = apex
     std::vector<int> coneFaces_;
     ConvexHull hull_;
+
+    JunctionShape shape_;
+    std::unique_ptr<SegmentGrid> segments_;  // built on the first junction shrunk
 };
 
 }  // namespace ramus::detail

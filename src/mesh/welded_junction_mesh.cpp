@@ -321,10 +321,14 @@ void WeldBuilder::meshJunction(NodeId cluster) {
     gatherJunction(cluster);
     if (hullRings_.empty()) return;
     const std::size_t before = mesh_.indices.size();
-    if (hullJunction()) {
-        if (!addNodeBalls()) return;
+    bool closed = hullJunction();
+    if (closed && addNodeBalls()) {
         mesh_.indices.resize(before);
-        if (hullJunction()) return;
+        closed = hullJunction();
+    }
+    if (closed) {
+        if (params_.shrinkJunctions) refineJunction(before);
+        return;
     }
     mesh_.indices.resize(before);
     ++report_.fallbacks;

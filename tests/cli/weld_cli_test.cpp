@@ -121,6 +121,27 @@ TEST(WeldCli, ColonizeConfigUnionUnitesEveryTree) {
     EXPECT_NE(r.err.find("mesh.union"), std::string::npos) << r.err;
 }
 
+// The hedge's base junctions web over their crotches as convex hulls; by default they are
+// shrunk onto the branches (more triangles, counted in weld_shrunk_junctions), and
+// --convex-junctions (config "convex_junctions") keeps the hulls. Without welding it is an
+// error, not silently nothing.
+TEST(WeldCli, ConvexJunctionsKeepTheHulls) {
+    const fs::path dir = scratchDirectory("weld_convex");
+    const std::string file = RAMUS_SOURCE_DIR "/examples/colonize/hedge.json";
+    const nlohmann::json shrunk = stats("colonize " + file + " --weld", dir);
+    const nlohmann::json convex = stats("colonize " + file + " --weld --convex-junctions", dir);
+    EXPECT_GT(shrunk["weld_shrunk_junctions"].get<int>(), 0);
+    EXPECT_EQ(convex["weld_shrunk_junctions"], 0);
+    EXPECT_GT(shrunk["triangles"].get<int>(), convex["triangles"].get<int>());
+
+    const fs::path config = ringConfigWith(dir, {{"weld", true}, {"convex_junctions", true}});
+    EXPECT_EQ(stats("colonize " + config.string(), dir)["weld_shrunk_junctions"], 0);
+
+    const CommandResult r = runRamus("colonize " + file + " --convex-junctions", dir);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find("--weld"), std::string::npos) << r.err;
+}
+
 // Every primitive has the three wind accessors, one element per vertex.
 void expectWindInGlb(const fs::path& glb) {
     const nlohmann::json doc = glbJson(readFile(glb.string()));

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -22,6 +23,38 @@ WeldedMeshParams segments(int lo, int hi) {
     params.tube.minSegments = lo;
     params.tube.maxSegments = hi;
     return params;
+}
+
+// How far the mesh lies outside the branches' capsules: its worst vertex and its worst
+// triangle centre, in radii of the capsule nearest to each, and its worst triangle centre in
+// local branch radii (the thickest branch there).
+struct Outside {
+    double vertex = 0.0, centre = 0.0, centreLocal = 0.0;
+    double farArea = 0.0;  // area of the triangles whose centre lies > 0.5 local radius out
+};
+Outside worstOutside(const BranchTree& tree, const WeldedMeshParams& params, const Mesh& mesh) {
+    const std::vector<double> radii = computeEdgeRadii(tree, params.tube);
+    const test::CapsuleUnion capsules(tree, radii, params.tube.trunkMultiplier * radii[0]);
+    Outside worst;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        Vec3 centre = Vec3::Zero();
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 p = mesh.positions[mesh.indices[3 * t + k]].cast<double>();
+            centre += p / 3.0;
+            const test::CapsuleDistance d = capsules.at(p);
+            worst.vertex = std::max(worst.vertex, d.distance / d.radius);
+        }
+        const test::CapsuleDistance d = capsules.at(centre);
+        worst.centre = std::max(worst.centre, d.distance / d.radius);
+        worst.centreLocal = std::max(worst.centreLocal, d.distance / d.scale);
+        if (d.distance > 0.5 * d.scale) {
+            const Vec3 a = mesh.positions[mesh.indices[3 * t]].cast<double>();
+            const Vec3 b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
+            const Vec3 c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
+            worst.farArea += 0.5 * (b - a).cross(c - a).norm();
+        }
+    }
+    return worst;
 }
 
 struct Expect {
@@ -53,24 +86,13 @@ void expectWelded(const BranchTree& tree, const WeldedMeshParams& params, const 
     ASSERT_EQ(mesh.uvs.size(), mesh.vertexCount());
     for (std::uint32_t i : mesh.indices) ASSERT_LT(i, mesh.vertexCount());
 
-    // Silhouette: every vertex lies on a branch's capsule (rings sit on the tubes), and every
-    // triangle centre stays within expect.outside × the local branch radius of the capsules
-    // (the convex junction bridges the crotches between branches).
-    const std::vector<double> radii = computeEdgeRadii(tree, params.tube);
-    const test::CapsuleUnion capsules(tree, radii, params.tube.trunkMultiplier * radii[0]);
-    double worstVertex = 0.0, worstCentre = 0.0;
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        Vec3 centre = Vec3::Zero();
-        for (int k = 0; k < 3; ++k) {
-            const Vec3 p = mesh.positions[mesh.indices[3 * t + k]].cast<double>();
-            centre += p / 3.0;
-            const test::CapsuleDistance d = capsules.at(p);
-            worstVertex = std::max(worstVertex, d.distance / d.radius);
-        }
-        const test::CapsuleDistance d = capsules.at(centre);
-        worstCentre = std::max(worstCentre, d.distance / d.scale);
-    }
-    EXPECT_LT(worstVertex, 1e-3);
+    // Silhouette: every vertex lies on a branch's capsule (rings sit on the tubes; vertices of
+    // shrunk junctions on the filleted branches, or on the hull where they could not move), and
+    // every triangle centre stays within expect.outside × the local branch radius of the
+    // capsules (the convex junction bridges the crotches between branches).
+    const Outside worst = worstOutside(tree, params, mesh);
+    const double worstVertex = worst.vertex, worstCentre = worst.centreLocal;
+    EXPECT_LT(worstVertex, report.refinedJunctions == 0 ? 1e-3 : expect.outside);
     EXPECT_LT(worstCentre, expect.outside);
     std::printf("%s: worst centre outside %.3f x local radius\n", name.c_str(), worstCentre);
     // Vice versa: the skeleton is enclosed (winding number 1 at every drawn edge's middle).
@@ -246,6 +268,44 @@ TEST(WeldedMesh, BranchNodesCloserThanTheirRingsMergeIntoOneJunction) {
     buildWeldedTreeMesh(tree, segments(8, 12), &report);
     EXPECT_GT(report.merges, 0u);
     expectWelded(tree, segments(8, 12), "dense_branching");
+}
+
+// Four twigs (radius 0.2) leave a trunk (1.0) at 20° from it, from branch nodes 0.6 apart
+// up the trunk, each turned by 137.5° about it: their rings settle several trunk radii out and
+// the junction's convex hull webs over the spiral of crotches between them. Shrunk onto the
+// branches, a twentieth of that area is left out there, and it stays a clean closed surface
+// (expectWelded).
+TEST(WeldedMesh, JunctionHullOverACrotchIsShrunkOntoTheBranches) {
+    BranchTree tree;
+    NodeId node = tree.addChild(tree.addRoot(Vec3::Zero(), 1.0), Vec3(0, 3, 0), 1.0);
+    for (int i = 0; i < 4; ++i) {
+        const double azimuth = degToRad(137.5 * i);
+        const double tilt = degToRad(20.0);
+        const Vec3 base = tree.node(node).position;
+        const Vec3 direction(std::sin(tilt) * std::cos(azimuth), std::cos(tilt),
+                             std::sin(tilt) * std::sin(azimuth));
+        tree.addChild(node, base + 8.0 * direction, 0.2);
+        node = tree.addChild(node, base + Vec3(0, 0.6, 0), 1.0 - 0.01 * i);
+    }
+    tree.addChild(node, tree.node(node).position + Vec3(0, 5, 0), 0.9);
+    // A few triangles at the foot of the twigs keep part of the web (0.58 local radii out).
+    expectWelded(tree, segments(8, 12), "twig_spiral", {.outside = 0.75});
+    WeldedMeshParams params = segments(8, 12);
+    WeldReport report;
+    const Mesh shrunk = buildWeldedTreeMesh(tree, params, &report);
+    EXPECT_EQ(report.refinedJunctions, 1u);
+    params.shrinkJunctions = false;
+    WeldReport hullReport;
+    const Mesh hull = buildWeldedTreeMesh(tree, params, &hullReport);
+    EXPECT_EQ(hullReport.refinedJunctions, 0u);
+    const double before = worstOutside(tree, params, hull).farArea;
+    const double after = worstOutside(tree, params, shrunk).farArea;
+    std::printf(
+        "twig_spiral: area more than 0.5 local radius outside the branches %.3f -> %.3f, "
+        "%zu -> %zu triangles\n",
+        before, after, hull.triangleCount(), shrunk.triangleCount());
+    EXPECT_LT(after, 0.1 * before);  // measured 4.62 → 0.22
+    EXPECT_GT(shrunk.triangleCount(), hull.triangleCount());
 }
 
 TEST(WeldedMesh, ShortTipNextToAJunctionIsAbsorbed) {

@@ -245,16 +245,21 @@ struct Bounds {
 };
 
 // The examples beyond those tolerances, bounded at their values measured on 2026-12-04 after
-// session 15's ring solver (the largest of the three views, docs/welded.md "Quality and
-// limits") plus 15 %, rounded up: they must not grow. Nothing the tubes show is missing in any
-// of them (the hedges lose 0.11–0.18 % of their area, all within 0.24 radii: twigs a pixel
-// beside the tube ones). They gain silhouette where junction hulls span more than the crotch:
+// session 18 shrank webbed junction hulls onto their branches (the largest of the three views,
+// docs/welded.md "Quality and limits") plus 15 %, rounded up: they must not grow. Nothing the
+// tubes show is missing in any of them (the hedges lose 0.11–0.18 % of their area, all within
+// 0.24 radii: twigs a pixel beside the tube ones). They gain silhouette where junction hulls
+// still span more than the crotch:
 // - ABOP 1.27 and 1.31a (and a little on 1.24a): junctions of clusters of tips whose limbs
-//   were absorbed or whose nodes merged, which stay in these three (1.27: 12 % of the area, up
-//   to 15 radii; before the solver change 30 % and 12 radii, 1.31a 48 % and 20.5).
-// - the hedges, fig3_2_ring and conifer: the base junction where several main branches leave
-//   the trunk at once is one convex hull over the whole crotch (hedge_4: 2.2 % of the area,
-//   6.9 radii), and on conifer a bump beside the trunk, 11.8 radii of the twig passing there.
+//   were absorbed or whose nodes merged, which keep their hulls because a limb between two of
+//   them is too short for both rings (a crossing; 1.27: 12 % of the area, up to 15 radii;
+//   before the solver change 30 % and 12 radii, 1.31a 48 % and 20.5).
+// - conifer: a bump beside the trunk, 11.8 radii of the twig passing there, at the junction of
+//   its one crossing limb (kept as a hull for the same reason).
+// - the hedges (0.52–1.3 % of the area; within 0.73 radii but hedge_1, 3.8) and fig3_2_ring
+//   (1.3 radii): what is left of the base junctions where several main branches leave the
+//   trunk at once; before the shrinking they were one convex hull over the whole crotch
+//   (hedge_4: 2.2 % of the area, 6.9 radii; hedge_0–3 1.5–2.3 %, 2.4–3.8 radii).
 // Before the solver change (the rings of slow pairs leapfrogged out along their limbs) every
 // dense ABOP plant and every colonization tree was an exception here, e.g. 2.8a with 78 % of
 // the tube silhouette's area added up to 30 radii from it, 2.6d 90 % and 41 radii.
@@ -263,13 +268,13 @@ const std::vector<std::pair<std::string, Bounds>>& exceptions() {
         {"abop_1_24a", {.gainedDistance = 1.2, .gainedArea = 0.019}},
         {"abop_1_27", {.gainedDistance = 18.0, .gainedArea = 0.15}},
         {"abop_1_31a", {.gainedDistance = 7.2, .gainedArea = 0.048}},
-        {"conifer_0", {.gainedDistance = 14.0, .gainedArea = 0.0064}},
-        {"fig3_2_ring_0", {.gainedDistance = 1.6, .gainedArea = 0.011}},
-        {"hedge_0", {.lostArea = 0.0021, .gainedDistance = 2.8, .gainedArea = 0.021}},
-        {"hedge_1", {.lostArea = 0.0014, .gainedDistance = 4.4, .gainedArea = 0.019}},
-        {"hedge_2", {.lostArea = 0.0014, .gainedDistance = 3.5, .gainedArea = 0.015}},
-        {"hedge_3", {.lostArea = 0.0015, .gainedDistance = 3.7, .gainedArea = 0.027}},
-        {"hedge_4", {.lostArea = 0.0013, .gainedDistance = 7.9, .gainedArea = 0.026}},
+        {"conifer_0", {.gainedDistance = 14.0, .gainedArea = 0.0055}},
+        {"fig3_2_ring_0", {.gainedDistance = 1.6}},
+        {"hedge_0", {.lostArea = 0.0021, .gainedArea = 0.0095}},
+        {"hedge_1", {.lostArea = 0.0014, .gainedDistance = 4.4, .gainedArea = 0.015}},
+        {"hedge_2", {.lostArea = 0.0015, .gainedArea = 0.006}},
+        {"hedge_3", {.lostArea = 0.0015, .gainedArea = 0.0079}},
+        {"hedge_4", {.lostArea = 0.0013, .gainedArea = 0.0074}},
     };
     return kExceptions;
 }

@@ -1,0 +1,581 @@
+// Shrinking junction hulls onto the branches they join.
+//
+// A junction's convex hull spans everything between its rings: where several thin branches
+// leave a thick trunk at small angles (colonization hedges: 9 arms from 6 merged branch nodes,
+// rings up to 19 radii out), it is one faceted blob over the whole crotch, far outside the tubes.
+// Junctions whose hull faces lie far from the branches are refined: each hull face is split
+// into a grid (edges on an arm's ring stay whole, the tube's sides share them), and every new
+// vertex moves from the hull towards a centre point inside the hull until it reaches the
+// branches' surface — the union of their tapered capsules with a small fillet (a smooth
+// minimum), as a sculpted crotch has.
+//
+// Why that keeps the surface clean: the hull is convex and holds the centre strictly inside,
+// so it is star-shaped from there, and a vertex moving along its ray towards the centre stays
+// inside the hull, behind every arm's ring plane, where no tube runs. A closed mesh whose
+// triangles all face away from the centre projects one to one onto the sphere around it, so
+// it cannot intersect itself. Each moved triangle is checked for that; where one fails its
+// corners' moves are halved, and after a few rounds they go back onto the hull (a flat
+// subdivided hull face always passes).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "welded_builder.hpp"
+
+namespace ramus::detail {
+namespace {
+
+// A hull face is a web, and refined, when its centre or an edge's midpoint lies farther than
+// this (in radii of the nearest branch) outside the branches: at 0.5 a quarter of the faces
+// of a hand-made crotch of twigs that lay farther than a quarter radius out were left
+// (WeldedMesh.JunctionHullOverACrotchIsShrunkOntoTheBranches).
+constexpr double kRefineExcess = 0.5;
+// At most this many pieces per hull edge (a face becomes up to kMaxSplit² triangles).
+constexpr int kMaxSplit = 8;
+// Target length of the new edges, in radii of the junction's thinnest arm.
+constexpr double kSplitLength = 2.0;
+// Fillet of the crotches (the smooth minimum's blend width) and how far outside the capsules'
+// surface the vertices stop (flat triangles between points on a curved surface cut in by their
+// sag, and the tube polygons they meet lie inside their capsules), in radii of the thinnest arm.
+constexpr double kFillet = 0.5;
+constexpr double kSurfaceOffset = 0.05;
+// Junctions with more branch segments than this within reach of their hull keep it: in a
+// tangle of branches (a dense synthetic binary tree: thousands per junction) shrinking would
+// cost time growing with the density, and the hull hides little there. The shipped examples
+// have at most 36 (hedge; the median junction 3–4), so none of theirs is left out.
+constexpr std::size_t kMaxCapsules = 64;
+// Rounds of halving the moves of triangles that turn towards the centre.
+constexpr int kHalvingRounds = 6;
+
+// FNV-1a over the bits of a float position: vertices at one position (texture seam copies)
+// hash alike.
+std::uint64_t positionHash(const Vec3f& p) {
+    std::uint64_t key = 1469598103934665603ull;
+    for (int k = 0; k < 3; ++k) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &p[k], sizeof bits);
+        key = (key ^ bits) * 1099511628211ull;
+    }
+    return key;
+}
+
+// Subdivides the hull faces of one junction (the last triangles of the mesh, from
+// `firstIndex`) and moves the new vertices onto the branches.
+class JunctionRefiner {
+public:
+    JunctionRefiner(Mesh& mesh, WindAttributes* wind, const JunctionShape& shape,
+                    const Vec3& centre, std::size_t firstIndex)
+        : mesh_(mesh), wind_(wind), shape_(shape), centre_(centre), first_(firstIndex) {}
+
+    // Marks the edges to split: those of faces far outside the branches (webs), but not the
+    // arms' ring edges (`whole(a, b)`), which the tubes share. Returns false if there is none.
+    template <class WholeEdge>
+    bool markWebs(WholeEdge whole) {
+        double longest = 0.0;
+        for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
+            const std::array<std::uint32_t, 3> v = face(f);
+            const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
+            bool webbed = false;
+            for (const Vec3& probe : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)),
+                                      Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a))}) {
+                webbed = webbed || shape_.outsideBy(probe) > kRefineExcess;
+            }
+            if (!webbed) continue;
+            for (int e = 0; e < 3; ++e) {
+                const std::uint32_t p = v[static_cast<std::size_t>(e)];
+                const std::uint32_t q = v[static_cast<std::size_t>((e + 1) % 3)];
+                if (whole(p, q)) continue;
+                split_.insert(edgeKey(canonical(p), canonical(q)));
+                longest = std::max(longest, (position(q) - position(p)).norm());
+            }
+        }
+        if (split_.empty()) return false;
+        m_ = std::clamp(static_cast<int>(std::ceil(longest / (kSplitLength * shape_.thinnest))), 2,
+                        kMaxSplit);
+        return true;
+    }
+
+    // Replaces the junction's faces: a face with all three edges split by a grid of m² triangles,
+    // with two by a ladder from their common corner, with one by a fan from the opposite corner.
+    void subdivide() {
+        const std::vector<std::uint32_t> faces(
+            mesh_.indices.begin() + static_cast<std::ptrdiff_t>(first_), mesh_.indices.end());
+        mesh_.indices.resize(first_);
+        firstNew_ = static_cast<std::uint32_t>(mesh_.positions.size());
+        for (std::size_t f = 0; f < faces.size(); f += 3) {
+            std::array<std::uint32_t, 3> v = {faces[f], faces[f + 1], faces[f + 2]};
+            std::array<bool, 3> cut{};
+            int cuts = 0;
+            for (int e = 0; e < 3; ++e) {
+                cut[static_cast<std::size_t>(e)] =
+                    split_.count(edgeKey(canonical(v[static_cast<std::size_t>(e)]),
+                                         canonical(v[static_cast<std::size_t>((e + 1) % 3)]))) > 0;
+                cuts += cut[static_cast<std::size_t>(e)] ? 1 : 0;
+            }
+            if (cuts == 0) {
+                mesh_.indices.insert(mesh_.indices.end(), v.begin(), v.end());
+            } else if (cuts == 1) {  // rotate the split edge to v0 → v1
+                const auto e = static_cast<int>(std::find(cut.begin(), cut.end(), true) - cut.begin());
+                std::rotate(v.begin(), v.begin() + e, v.end());
+                fan(v);
+            } else if (cuts == 2) {  // rotate the whole edge to v1 → v2
+                const auto e = static_cast<int>(std::find(cut.begin(), cut.end(), false) - cut.begin());
+                std::rotate(v.begin(), v.begin() + (e + 2) % 3, v.end());
+                ladder(v);
+            } else {
+                grid(v);
+            }
+        }
+    }
+
+    // Moves every new vertex to where its ray towards the centre enters the branches' surface,
+    // then halves the moves around triangles that turn to face the centre or leave a `sample`
+    // (a point of a branch's axis) outside, until none does; after kHalvingRounds such
+    // vertices go back onto the hull. Copies of a vertex on a texture seam share one move.
+    void shrink(const std::vector<Vec3>& samples) {
+        const std::size_t added = onHull_.size();
+        target_.resize(added);
+        for (std::size_t i = 0; i < added; ++i) target_[i] = restingPoint(onHull_[i]);
+        findSeamCopies();
+        share_.assign(added, 1.0);
+        // The vertices move along rays from the centre, so the triangle whose cone holds a
+        // sample stays the same.
+        std::vector<std::pair<std::size_t, Vec3>> held;
+        for (const Vec3& q : samples) {
+            const std::size_t f = faceAbove(q);
+            if (f != kNone) held.emplace_back(f, q);
+        }
+        for (int round = 0;; ++round) {
+            for (std::size_t i = 0; i < added; ++i) {
+                mesh_.positions[firstNew_ + i] =
+                    (onHull_[i] + share_[owner_[i]] * (target_[i] - onHull_[i])).cast<float>();
+            }
+            bool halved = false;
+            for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
+                if (!facesAway(f)) halved = halveMoves(f, round) || halved;
+            }
+            for (const auto& [f, q] : held) {
+                if (!below(f, q)) halved = halveMoves(f, round) || halved;
+            }
+            if (!halved) break;
+        }
+        setNormals();
+    }
+
+private:
+    static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+    static std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
+        return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+    }
+    Vec3 position(std::uint32_t v) const { return mesh_.positions[v].cast<double>(); }
+    // The first corner vertex seen at v's position: one id for a ring vertex and its seam
+    // copy, so a split edge is split in both faces on it whichever copy they use.
+    std::uint32_t canonical(std::uint32_t v) {
+        const Vec3f& p = mesh_.positions[v];
+        const auto it = corners_.emplace(positionHash(p), v).first;
+        return mesh_.positions[it->second] == p ? it->second : v;  // else a 64-bit collision
+    }
+    std::array<std::uint32_t, 3> face(std::size_t f) const {
+        return {mesh_.indices[f], mesh_.indices[f + 1], mesh_.indices[f + 2]};
+    }
+
+    // A new vertex on the hull at `p`: texture and tangent blended from `corners` by `weights`,
+    // the wind values of the nearest corner (the level must stay a whole number, and one
+    // branch's phase is not to be mixed with another's).
+    std::uint32_t addVertex(const Vec3& p, const std::array<std::uint32_t, 3>& corners,
+                            const Vec3& weights) {
+        const auto id = static_cast<std::uint32_t>(mesh_.positions.size());
+        Vec2f uv = Vec2f::Zero();
+        Vec3f tangent = Vec3f::Zero();
+        int nearest = 0;
+        for (int i = 0; i < 3; ++i) {
+            const auto w = static_cast<float>(weights[i]);
+            uv += w * mesh_.uvs[corners[static_cast<std::size_t>(i)]];
+            tangent += w * mesh_.tangents[corners[static_cast<std::size_t>(i)]].head<3>();
+            if (weights[i] > weights[nearest]) nearest = i;
+        }
+        tangent = tangent.norm() > 0.0f ? Vec3f(tangent.normalized()) : Vec3f::UnitX();
+        onHull_.push_back(p);
+        mesh_.positions.push_back(p.cast<float>());
+        mesh_.normals.push_back(Vec3f::UnitY());  // set once the vertex has moved
+        mesh_.tangents.emplace_back(tangent.x(), tangent.y(), tangent.z(), 1.0f);
+        mesh_.uvs.push_back(uv);
+        if (wind_ != nullptr) {
+            const std::size_t from = corners[static_cast<std::size_t>(nearest)];
+            wind_->resize(mesh_.positions.size());
+            auto copy = [&](std::vector<float>& values, std::size_t width) {
+                std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(from * width), width,
+                            values.begin() + static_cast<std::ptrdiff_t>(id * width));
+            };
+            copy(wind_->wind, 4);
+            copy(wind_->pivot, 3);
+            copy(wind_->leaf, 2);
+        }
+        return id;
+    }
+
+    // Vertex k (0 … m) along edge a → b. A split edge's m − 1 vertices are shared by the faces
+    // on it and placed from its lexicographically smaller end, so seam copies of the edge
+    // (other vertex ids, the same positions) get bit-identical positions.
+    std::uint32_t edgeVertex(std::uint32_t a, std::uint32_t b, int k) {
+        if (k == 0) return a;
+        if (k == m_) return b;
+        auto it = edges_.find(edgeKey(a, b));
+        if (it == edges_.end()) {
+            const Vec3f& pa = mesh_.positions[a];
+            const Vec3f& pb = mesh_.positions[b];
+            const bool forward =
+                !std::lexicographical_compare(pb.data(), pb.data() + 3, pa.data(), pa.data() + 3);
+            const std::uint32_t from = forward ? a : b, to = forward ? b : a;
+            const Vec3 p = position(from), q = position(to);
+            const auto firstId = static_cast<std::uint32_t>(mesh_.positions.size());
+            for (int i = 1; i < m_; ++i) {
+                const double t = static_cast<double>(i) / m_;
+                addVertex(p + t * (q - p), {from, to, to}, Vec3(1.0 - t, t, 0.0));
+            }
+            it = edges_.emplace(edgeKey(a, b), SplitEdge{firstId, from}).first;
+        }
+        const int i = it->second.from == a ? k : m_ - k;
+        return it->second.first + static_cast<std::uint32_t>(i - 1);
+    }
+
+    void emit(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        mesh_.indices.insert(mesh_.indices.end(), {a, b, c});
+    }
+    // Edge v0 → v1 split, fan from v2.
+    void fan(const std::array<std::uint32_t, 3>& v) {
+        for (int i = 0; i < m_; ++i) emit(edgeVertex(v[0], v[1], i), edgeVertex(v[0], v[1], i + 1), v[2]);
+    }
+    // Edges v0 → v1 and v0 → v2 split: rows between them from v0.
+    void ladder(const std::array<std::uint32_t, 3>& v) {
+        emit(v[0], edgeVertex(v[0], v[1], 1), edgeVertex(v[0], v[2], 1));
+        for (int l = 1; l < m_; ++l) {
+            const std::uint32_t b0 = edgeVertex(v[0], v[1], l), b1 = edgeVertex(v[0], v[1], l + 1);
+            const std::uint32_t c0 = edgeVertex(v[0], v[2], l), c1 = edgeVertex(v[0], v[2], l + 1);
+            emit(b0, b1, c1);
+            emit(b0, c1, c0);
+        }
+    }
+    // All edges split: vertex (i, j) at v0 + i/m (v1 − v0) + j/m (v2 − v0).
+    void grid(const std::array<std::uint32_t, 3>& v) {
+        const auto side = static_cast<std::size_t>(m_ + 1);
+        grid_.assign(side * side, 0);
+        auto at = [&](int i, int j) -> std::uint32_t& {
+            return grid_[static_cast<std::size_t>(i) * side + static_cast<std::size_t>(j)];
+        };
+        const Vec3 p0 = position(v[0]), p1 = position(v[1]), p2 = position(v[2]);
+        for (int i = 0; i <= m_; ++i) {
+            for (int j = 0; i + j <= m_; ++j) {
+                if (j == 0) {
+                    at(i, j) = edgeVertex(v[0], v[1], i);
+                } else if (i == 0) {
+                    at(i, j) = edgeVertex(v[0], v[2], j);
+                } else if (i + j == m_) {
+                    at(i, j) = edgeVertex(v[1], v[2], j);
+                } else {
+                    const Vec3 w(static_cast<double>(m_ - i - j) / m_, static_cast<double>(i) / m_,
+                                 static_cast<double>(j) / m_);
+                    at(i, j) = addVertex(w[0] * p0 + w[1] * p1 + w[2] * p2, v, w);
+                }
+            }
+        }
+        for (int i = 0; i < m_; ++i) {
+            for (int j = 0; i + j < m_; ++j) {
+                emit(at(i, j), at(i + 1, j), at(i, j + 1));
+                if (i + j + 1 < m_) emit(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            }
+        }
+    }
+
+    // Along the ray from hull point p to the centre, the first point inside the branches'
+    // surface (marching by a quarter of the thinnest arm, then bisecting); p itself if the ray
+    // meets none before the centre.
+    Vec3 restingPoint(const Vec3& p) const {
+        const double iso = kSurfaceOffset * shape_.thinnest;
+        const Vec3 toCentre = centre_ - p;
+        const double length = toCentre.norm();
+        double d = shape_.distance(p) - iso;
+        if (!(length > 0.0) || d <= 0.0) return p;
+        const Vec3 direction = toCentre / length;
+        // Sphere tracing: no branch lies within d of a point d outside them (up to the taper,
+        // hence the safety factor), so the first crossing is not stepped over.
+        const double least = 0.05 * shape_.thinnest;
+        double outside = 0.0, dOut = d;
+        while (outside < length) {
+            const double s = std::min(length, outside + std::max(0.8 * d, least));
+            d = shape_.distance(p + s * direction) - iso;
+            if (d <= 0.0) return p + crossing(p, direction, outside, dOut, s, d) * direction;
+            dOut = d;
+            outside = s;
+        }
+        return p;
+    }
+
+    // Where the surface (offset by the iso value) crosses the ray p + s·direction between
+    // `outside` (value dOut > 0) and `inside` (dIn ≤ 0): regula falsi, Illinois variant.
+    double crossing(const Vec3& p, const Vec3& direction, double outside, double dOut,
+                    double inside, double dIn) const {
+        const double iso = kSurfaceOffset * shape_.thinnest;
+        const double tolerance = 1e-3 * shape_.thinnest;
+        int side = 0;
+        for (int k = 0; k < 32 && inside - outside > tolerance; ++k) {
+            const double s = outside + (inside - outside) * dOut / (dOut - dIn);
+            const double d = shape_.distance(p + s * direction) - iso;
+            if (std::abs(d) < 1e-2 * tolerance) return s;
+            if (d > 0.0) {
+                outside = s;
+                dOut = d;
+                if (side == 1) dIn *= 0.5;
+                side = 1;
+            } else {
+                inside = s;
+                dIn = d;
+                if (side == -1) dOut *= 0.5;
+                side = -1;
+            }
+        }
+        return inside;
+    }
+
+    // owner_[i]: the first new vertex at new vertex i's hull position (seam copies).
+    void findSeamCopies() {
+        owner_.resize(onHull_.size());
+        std::unordered_map<std::uint64_t, std::uint32_t> first;
+        for (std::size_t i = 0; i < onHull_.size(); ++i) {
+            const Vec3f p = onHull_[i].cast<float>();
+            const auto [it, fresh] = first.emplace(positionHash(p), static_cast<std::uint32_t>(i));
+            const bool same = !fresh && onHull_[it->second].cast<float>() == p;
+            owner_[i] = same ? it->second : static_cast<std::uint32_t>(i);
+        }
+    }
+
+    // Triangle f faces away from the centre, by more than rounding.
+    bool facesAway(std::size_t f) const {
+        const std::array<std::uint32_t, 3> v = face(f);
+        const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
+        const Vec3 normal = (b - a).cross(c - a);
+        return normal.dot(a - centre_) > 1e-3 * normal.norm() * (a - centre_).norm();
+    }
+    // The triangle whose cone from the centre holds q, or kNone.
+    std::size_t faceAbove(const Vec3& q) const {
+        const Vec3 d = q - centre_;
+        for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
+            const std::array<std::uint32_t, 3> v = face(f);
+            const Vec3 a = position(v[0]) - centre_, b = position(v[1]) - centre_,
+                       c = position(v[2]) - centre_;
+            if (d.dot(a.cross(b)) >= 0.0 && d.dot(b.cross(c)) >= 0.0 && d.dot(c.cross(a)) >= 0.0) {
+                return f;
+            }
+        }
+        return kNone;
+    }
+    // q lies on the centre's side of triangle f's plane.
+    bool below(std::size_t f, const Vec3& q) const {
+        const std::array<std::uint32_t, 3> v = face(f);
+        const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
+        return (b - a).cross(c - a).dot(q - a) < 0.0;
+    }
+    // Halves the moves of triangle f's new vertices (zeroes them after kHalvingRounds);
+    // returns whether any was still moved.
+    bool halveMoves(std::size_t f, int round) {
+        bool any = false;
+        for (const std::uint32_t v : face(f)) {
+            if (v < firstNew_) continue;
+            double& share = share_[owner_[v - firstNew_]];
+            if (share == 0.0) continue;
+            share = round < kHalvingRounds ? 0.5 * share : 0.0;
+            any = true;
+        }
+        return any;
+    }
+
+    // Normals of the new vertices: the surface's gradient (the same at seam copies).
+    void setNormals() {
+        for (std::size_t i = 0; i < onHull_.size(); ++i) {
+            const Vec3 p = position(firstNew_ + static_cast<std::uint32_t>(i));
+            Vec3 gradient;
+            shape_.distance(p, &gradient);
+            if (!(gradient.norm() > 1e-6)) gradient = p - centre_;
+            mesh_.normals[firstNew_ + i] = gradient.normalized().cast<float>();
+        }
+    }
+
+    struct SplitEdge {
+        std::uint32_t first;  // of its m − 1 vertices, counted from `from`
+        std::uint32_t from;
+    };
+    Mesh& mesh_;
+    WindAttributes* wind_;
+    const JunctionShape& shape_;
+    Vec3 centre_;
+    std::size_t first_;
+    int m_ = 2;
+    std::uint32_t firstNew_ = 0;
+    std::unordered_set<std::uint64_t> split_;  // edges to split, by canonical corner ids
+    std::unordered_map<std::uint64_t, std::uint32_t> corners_;  // position hash → corner
+    std::unordered_map<std::uint64_t, SplitEdge> edges_;
+    std::vector<Vec3> onHull_;  // per new vertex: its position on the hull
+    std::vector<Vec3> target_;  // per new vertex: where it rests on the branches
+    std::vector<std::uint32_t> owner_;
+    std::vector<double> share_;  // per owner: the fraction of its move made
+    std::vector<std::uint32_t> grid_;
+};
+
+}  // namespace
+
+JunctionShape::Capsule::Point JunctionShape::Capsule::nearest(const Vec3& p) const {
+    const Vec3 ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return {p - a - t * ab, ra + t * (rb - ra)};
+}
+
+// Signed distance of `p` to the junction's branches (tapered capsules), smoothed by the
+// fillet: negative inside.
+double JunctionShape::distance(const Vec3& p, Vec3* gradient) const {
+    double d = std::numeric_limits<double>::infinity();
+    Vec3 g = Vec3::Zero();
+    for (const Capsule& c : capsules) {
+        const Capsule::Point q = c.nearest(p);
+        const double length = q.offset.norm();
+        const double di = length - q.radius;
+        // Polynomial smooth minimum (Quilez): min(d, di) − fillet h²/4 with h = (fillet −
+        // |d − di|) / fillet, which is min(d, di) once they differ by `fillet`. Its slope in d
+        // is 1 − h/2 where d is the smaller, h/2 where it is the larger.
+        const double h = std::max(fillet - std::abs(d - di), 0.0) / fillet;
+        if (gradient != nullptr && length > 0.0) {
+            const double toNew = di < d ? 1.0 - 0.5 * h : 0.5 * h;
+            g = (1.0 - toNew) * g + toNew * (q.offset / length);
+        }
+        d = std::min(d, di) - 0.25 * h * h * fillet;
+    }
+    if (gradient != nullptr) *gradient = g;
+    return d;
+}
+
+// The branches within reach of the junction's hull (centre `centre`, radius `reach`): its arms
+// and absorbed limbs, and any other branch that passes through it (a crossing in the
+// skeleton; the shrunk surface must keep it inside, as the hull did), as tapered capsules.
+bool WeldBuilder::gatherJunctionShape(const Vec3& centre, double reach) {
+    const WeldSkeleton& s = skeleton_;
+    shape_.capsules.clear();
+    double thinnest = std::numeric_limits<double>::infinity();
+    for (const HullRing& h : hullRings_) {
+        if (h.hole()) thinnest = std::min(thinnest, h.ring.radius);
+    }
+    if (!segments_) segments_ = std::make_unique<SegmentGrid>(s);
+    const bool all = segments_->near(centre, reach, [&](std::uint32_t p) {
+        const JunctionShape::Capsule capsule{s.pointPosition[p], s.pointPosition[p + 1],
+                                             s.pointRadius[p], s.pointRadius[p + 1]};
+        const JunctionShape::Capsule::Point q = capsule.nearest(centre);
+        if (q.offset.norm() - q.radius <= reach) shape_.capsules.push_back(capsule);
+        return shape_.capsules.size() <= kMaxCapsules;
+    });
+    shape_.thinnest = thinnest;
+    shape_.fillet = kFillet * thinnest;
+    return all;
+}
+
+// How far `p` lies outside the plain union of the capsules, in local radii: of the thickest
+// capsule whose surface is within the nearest one's radius of the nearest distance (so a face
+// bridging a thin branch's ring to its thick parent's, an ordinary crotch, is judged by the
+// parent's radius; a web between twigs far from any thick branch by the twigs').
+double JunctionShape::outsideBy(const Vec3& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    double nearest = thinnest;
+    auto surface = [&](const Capsule& c, double& radius) {
+        const Capsule::Point q = c.nearest(p);
+        radius = q.radius;
+        return q.offset.norm() - q.radius;
+    };
+    for (const Capsule& c : capsules) {
+        double r = 0.0;
+        const double d = surface(c, r);
+        if (d < best) {
+            best = d;
+            nearest = r;
+        }
+    }
+    double scale = nearest;
+    for (const Capsule& c : capsules) {
+        double r = 0.0;
+        if (surface(c, r) <= best + nearest) scale = std::max(scale, r);
+    }
+    return best / scale;
+}
+
+// Whether mesh vertices a and b are neighbours on one arm's ring (an edge the arm's tube
+// shares: it must stay whole).
+bool WeldBuilder::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
+    for (const HullRing& h : hullRings_) {
+        if (!h.hole()) continue;
+        const std::uint32_t base = h.ring.base;
+        const auto n = static_cast<std::uint32_t>(h.ring.n);
+        if (a < base || a > base + n || b < base || b > base + n) continue;
+        const std::uint32_t i = (a - base) % n, j = (b - base) % n;
+        return (i + 1) % n == j || (j + 1) % n == i;
+    }
+    return false;
+}
+
+// Whether an arm of the junction is a crossing: its limb ends in another junction and is too
+// short for both rings, which pass each other. The two hulls overlap there; shrunk apart from
+// each other they would cut through one another in more places (conifer: 49 intersecting
+// triangle pairs → 82), so such junctions keep their hulls.
+bool WeldBuilder::hasCrossingArm() const {
+    for (const HullRing& h : hullRings_) {
+        if (!h.hole()) continue;
+        const auto l = static_cast<std::size_t>(h.limb);
+        const WeldLimb& limb = skeleton_.limbs[l];
+        if (junctions_.cluster[static_cast<std::size_t>(limb.startKey)] >= 0 &&
+            junctions_.cluster[static_cast<std::size_t>(limb.endKey)] >= 0 &&
+            junctions_.startOffset[l] + junctions_.endOffset[l] > skeleton_.limbLength(limb)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void WeldBuilder::refineJunction(std::size_t firstIndex) {
+    if (mesh_.indices.size() == firstIndex || hasCrossingArm()) return;
+    // Centre: the mean of the hull's corners (strictly inside a convex hull).
+    Vec3 centre = Vec3::Zero();
+    for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
+        centre += mesh_.positions[mesh_.indices[i]].cast<double>();
+    }
+    centre /= static_cast<double>(mesh_.indices.size() - firstIndex);
+    double reach = 0.0;
+    for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
+        reach = std::max(reach, (mesh_.positions[mesh_.indices[i]].cast<double>() - centre).norm());
+    }
+    if (!gatherJunctionShape(centre, reach) || shape_.capsules.empty() ||
+        !(shape_.thinnest > 0.0)) {
+        return;
+    }
+    JunctionRefiner refiner(mesh_, params_.tube.windAttributes ? &windOut_ : nullptr, shape_,
+                            centre, firstIndex);
+    if (!refiner.markWebs([&](std::uint32_t a, std::uint32_t b) { return onArmRingEdge(a, b); })) {
+        return;
+    }
+    // Points along the branches' axes inside the hull: they must stay inside.
+    std::vector<Vec3> samples;
+    for (const JunctionShape::Capsule& capsule : shape_.capsules) {
+        const double length = (capsule.b - capsule.a).norm();
+        const double spacing = 0.5 * std::min(capsule.ra, capsule.rb);
+        const int pieces = std::clamp(static_cast<int>(std::ceil(length / spacing)), 1, 16);
+        for (int k = 0; k <= pieces; ++k) {
+            const Vec3 q = capsule.a + (static_cast<double>(k) / pieces) * (capsule.b - capsule.a);
+            if (depthInHull(q) > 0.0) samples.push_back(q);
+        }
+    }
+    refiner.subdivide();
+    refiner.shrink(samples);
+    ++report_.refinedJunctions;
+}
+
+}  // namespace ramus::detail
