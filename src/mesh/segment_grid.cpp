@@ -42,7 +42,8 @@ SegmentGrid::SegmentGrid(const WeldSkeleton& s) {
             }
             for (std::int64_t x = a[0]; x <= b[0]; ++x) {
                 for (std::int64_t y = a[1]; y <= b[1]; ++y) {
-                    for (std::int64_t z = a[2]; z <= b[2]; ++z) entries_.emplace_back(keyOf({x, y, z}), p);
+                    for (std::int64_t z = a[2]; z <= b[2]; ++z)
+                        entries_.emplace_back(keyOf({x, y, z}), p);
                 }
             }
         }

@@ -67,7 +67,7 @@ private:
     double cell_ = 1.0;
     std::vector<std::pair<std::uint64_t, std::uint32_t>> entries_;  // (cell key, point), sorted
     std::vector<std::uint32_t> large_;  // segments too large for cells: returned every time
-    std::vector<std::uint32_t> seen_;                               // per point: last query
+    std::vector<std::uint32_t> seen_;   // per point: last query
     std::uint32_t stamp_ = 0;
 };
 

@@ -61,7 +61,8 @@ public:
         WeldedMeshParams welded;
         welded.tube = tube;
         welded.solidUnion = d.solidUnion;
-        welded.shrinkJunctions = !params_.convexJunctions;
+        // The LOD planner's trials are not united, but must mesh as the united levels do.
+        welded.shrinkJunctions = !params_.convexJunctions && !params_.solidUnion;
         WeldReport weld;
         Mesh mesh = buildWeldedTreeMesh(tree, welded, &weld);
         if (d.reported && report_ != nullptr) {

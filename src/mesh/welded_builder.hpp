@@ -47,8 +47,9 @@ struct JunctionShape {
     /// Signed distance to the union of the capsules, smoothed by the fillet (< 0 inside);
     /// `gradient` (optional) receives its direction of steepest ascent (about unit length).
     double distance(const Vec3& p, Vec3* gradient = nullptr) const;
-    /// How far `p` lies outside the capsules (without the fillet), in radii of the nearest.
-    double outsideBy(const Vec3& p) const;
+    /// Whether `p` lies more than `limit` local radii outside the capsules (without the
+    /// fillet; welded_junction_refine.cpp says which radius).
+    bool farOutside(const Vec3& p, double limit) const;
 };
 
 class WeldBuilder {
@@ -89,7 +90,9 @@ private:
 
     // welded_junction_refine.cpp
     void refineJunction(std::size_t firstIndex);
+    void gatherOwnShape(double reach, const Vec3& centre);
     bool gatherJunctionShape(const Vec3& centre, double reach);
+    void addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach);
     bool onArmRingEdge(std::uint32_t a, std::uint32_t b) const;
     bool hasCrossingArm() const;
 

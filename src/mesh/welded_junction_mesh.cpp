@@ -327,7 +327,10 @@ void WeldBuilder::meshJunction(NodeId cluster) {
         closed = hullJunction();
     }
     if (closed) {
-        if (params_.shrinkJunctions) refineJunction(before);
+        // Not before a solid union: shrunk junctions hug neighbouring branches within a few
+        // hundredths of their radius, and the union's rounding left crossings there (ABOP 2.8c:
+        // 572 pairs, multi_trunk_0 a pinched edge; make union-check, session 18).
+        if (params_.shrinkJunctions && !params_.solidUnion) refineJunction(before);
         return;
     }
     mesh_.indices.resize(before);

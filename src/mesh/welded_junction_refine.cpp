@@ -1,21 +1,20 @@
-// Shrinking junction hulls onto the branches they join.
+// Shrinking junction hulls onto the branches they join (docs/welded.md, "Shrunk junctions").
 //
 // A junction's convex hull spans everything between its rings: where several thin branches
 // leave a thick trunk at small angles (colonization hedges: 9 arms from 6 merged branch nodes,
 // rings up to 19 radii out), it is one faceted blob over the whole crotch, far outside the tubes.
-// Junctions whose hull faces lie far from the branches are refined: each hull face is split
-// into a grid (edges on an arm's ring stay whole, the tube's sides share them), and every new
-// vertex moves from the hull towards a centre point inside the hull until it reaches the
-// branches' surface — the union of their tapered capsules with a small fillet (a smooth
-// minimum), as a sculpted crotch has.
+// The hull faces that lie far from the branches (webs) are subdivided (edges on an arm's ring
+// stay whole: the tube's sides share them), and every new vertex moves from the hull towards
+// a centre point inside the hull until it reaches the branches' surface — the union of their
+// tapered capsules with a small fillet (a smooth minimum), as a sculpted crotch has.
 //
 // Why that keeps the surface clean: the hull is convex and holds the centre strictly inside,
 // so it is star-shaped from there, and a vertex moving along its ray towards the centre stays
 // inside the hull, behind every arm's ring plane, where no tube runs. A closed mesh whose
 // triangles all face away from the centre projects one to one onto the sphere around it, so
-// it cannot intersect itself. Each moved triangle is checked for that; where one fails its
-// corners' moves are halved, and after a few rounds they go back onto the hull (a flat
-// subdivided hull face always passes).
+// it cannot intersect itself. Each moved triangle is checked for that, and for keeping the
+// branches' axes inside; where one fails its corners' moves are halved, and after a few
+// rounds they go back onto the hull (a flat subdivided hull face always passes).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -82,7 +81,7 @@ public:
             bool webbed = false;
             for (const Vec3& probe : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)),
                                       Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a))}) {
-                webbed = webbed || shape_.outsideBy(probe) > kRefineExcess;
+                if ((webbed = shape_.farOutside(probe, kRefineExcess))) break;
             }
             if (!webbed) continue;
             for (int e = 0; e < 3; ++e) {
@@ -119,11 +118,13 @@ public:
             if (cuts == 0) {
                 mesh_.indices.insert(mesh_.indices.end(), v.begin(), v.end());
             } else if (cuts == 1) {  // rotate the split edge to v0 → v1
-                const auto e = static_cast<int>(std::find(cut.begin(), cut.end(), true) - cut.begin());
+                const auto e =
+                    static_cast<int>(std::find(cut.begin(), cut.end(), true) - cut.begin());
                 std::rotate(v.begin(), v.begin() + e, v.end());
                 fan(v);
             } else if (cuts == 2) {  // rotate the whole edge to v1 → v2
-                const auto e = static_cast<int>(std::find(cut.begin(), cut.end(), false) - cut.begin());
+                const auto e =
+                    static_cast<int>(std::find(cut.begin(), cut.end(), false) - cut.begin());
                 std::rotate(v.begin(), v.begin() + (e + 2) % 3, v.end());
                 ladder(v);
             } else {
@@ -249,7 +250,8 @@ private:
     }
     // Edge v0 → v1 split, fan from v2.
     void fan(const std::array<std::uint32_t, 3>& v) {
-        for (int i = 0; i < m_; ++i) emit(edgeVertex(v[0], v[1], i), edgeVertex(v[0], v[1], i + 1), v[2]);
+        for (int i = 0; i < m_; ++i)
+            emit(edgeVertex(v[0], v[1], i), edgeVertex(v[0], v[1], i + 1), v[2]);
     }
     // Edges v0 → v1 and v0 → v2 split: rows between them from v0.
     void ladder(const std::array<std::uint32_t, 3>& v) {
@@ -458,34 +460,53 @@ double JunctionShape::distance(const Vec3& p, Vec3* gradient) const {
     return d;
 }
 
+// The junction's own branches (its arms' and absorbed limbs' segments within `reach` of
+// `centre`) as capsules, and its thinnest arm.
+void WeldBuilder::gatherOwnShape(double reach, const Vec3& centre) {
+    const WeldSkeleton& s = skeleton_;
+    shape_.capsules.clear();
+    shape_.thinnest = std::numeric_limits<double>::infinity();
+    std::int32_t last = -1;
+    for (const HullRing& h : hullRings_) {
+        if (h.hole()) shape_.thinnest = std::min(shape_.thinnest, h.ring.radius);
+        if (h.limb == last) continue;  // a limb's rings are listed together
+        last = h.limb;
+        const WeldLimb& limb = s.limbs[static_cast<std::size_t>(h.limb)];
+        for (std::uint32_t p = limb.first; p + 1 < limb.first + limb.count; ++p) {
+            addSegmentInReach(p, centre, reach);
+        }
+    }
+    shape_.fillet = kFillet * shape_.thinnest;
+}
+
 // The branches within reach of the junction's hull (centre `centre`, radius `reach`): its arms
 // and absorbed limbs, and any other branch that passes through it (a crossing in the
 // skeleton; the shrunk surface must keep it inside, as the hull did), as tapered capsules.
 bool WeldBuilder::gatherJunctionShape(const Vec3& centre, double reach) {
     const WeldSkeleton& s = skeleton_;
     shape_.capsules.clear();
-    double thinnest = std::numeric_limits<double>::infinity();
-    for (const HullRing& h : hullRings_) {
-        if (h.hole()) thinnest = std::min(thinnest, h.ring.radius);
-    }
     if (!segments_) segments_ = std::make_unique<SegmentGrid>(s);
-    const bool all = segments_->near(centre, reach, [&](std::uint32_t p) {
-        const JunctionShape::Capsule capsule{s.pointPosition[p], s.pointPosition[p + 1],
-                                             s.pointRadius[p], s.pointRadius[p + 1]};
-        const JunctionShape::Capsule::Point q = capsule.nearest(centre);
-        if (q.offset.norm() - q.radius <= reach) shape_.capsules.push_back(capsule);
+    return segments_->near(centre, reach, [&](std::uint32_t p) {
+        addSegmentInReach(p, centre, reach);
         return shape_.capsules.size() <= kMaxCapsules;
     });
-    shape_.thinnest = thinnest;
-    shape_.fillet = kFillet * thinnest;
-    return all;
 }
 
-// How far `p` lies outside the plain union of the capsules, in local radii: of the thickest
-// capsule whose surface is within the nearest one's radius of the nearest distance (so a face
-// bridging a thin branch's ring to its thick parent's, an ordinary crotch, is judged by the
+// Adds the segment from limb point p to p + 1 to the shape if its capsule comes within
+// `reach` of `centre`.
+void WeldBuilder::addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach) {
+    const WeldSkeleton& s = skeleton_;
+    const JunctionShape::Capsule capsule{s.pointPosition[p], s.pointPosition[p + 1],
+                                         s.pointRadius[p], s.pointRadius[p + 1]};
+    const JunctionShape::Capsule::Point q = capsule.nearest(centre);
+    if (q.offset.norm() - q.radius <= reach) shape_.capsules.push_back(capsule);
+}
+
+// Whether `p` lies more than `limit` local radii outside the plain union of the capsules: of the
+// thickest capsule whose surface is within the nearest one's radius of the nearest distance (so a
+// face bridging a thin branch's ring to its thick parent's, an ordinary crotch, is judged by the
 // parent's radius; a web between twigs far from any thick branch by the twigs').
-double JunctionShape::outsideBy(const Vec3& p) const {
+bool JunctionShape::farOutside(const Vec3& p, double limit) const {
     double best = std::numeric_limits<double>::infinity();
     double nearest = thinnest;
     auto surface = [&](const Capsule& c, double& radius) {
@@ -501,12 +522,13 @@ double JunctionShape::outsideBy(const Vec3& p) const {
             nearest = r;
         }
     }
+    if (best <= limit * nearest) return false;  // the local radius is at least the nearest's
     double scale = nearest;
     for (const Capsule& c : capsules) {
         double r = 0.0;
         if (surface(c, r) <= best + nearest) scale = std::max(scale, r);
     }
-    return best / scale;
+    return best > limit * scale;
 }
 
 // Whether mesh vertices a and b are neighbours on one arm's ring (an edge the arm's tube
@@ -553,13 +575,14 @@ void WeldBuilder::refineJunction(std::size_t firstIndex) {
     for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
         reach = std::max(reach, (mesh_.positions[mesh_.indices[i]].cast<double>() - centre).norm());
     }
-    if (!gatherJunctionShape(centre, reach) || shape_.capsules.empty() ||
-        !(shape_.thinnest > 0.0)) {
-        return;
-    }
+    // Webs are judged against the junction's own branches alone (few capsules: most junctions
+    // have none, and this is all they cost); the shrinking then takes every branch in reach.
+    gatherOwnShape(reach, centre);
+    if (shape_.capsules.empty() || !(shape_.thinnest > 0.0)) return;
     JunctionRefiner refiner(mesh_, params_.tube.windAttributes ? &windOut_ : nullptr, shape_,
                             centre, firstIndex);
-    if (!refiner.markWebs([&](std::uint32_t a, std::uint32_t b) { return onArmRingEdge(a, b); })) {
+    if (!refiner.markWebs([&](std::uint32_t a, std::uint32_t b) { return onArmRingEdge(a, b); }) ||
+        !gatherJunctionShape(centre, reach)) {
         return;
     }
     // Points along the branches' axes inside the hull: they must stay inside.
