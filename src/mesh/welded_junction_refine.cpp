@@ -16,13 +16,14 @@
 // branches' axes inside; where one fails its corners' moves are halved, and after a few
 // rounds they go back onto the hull (a flat subdivided hull face always passes).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "ramus/rng.hpp"
 #include "welded_builder.hpp"
 
 namespace ramus::detail {
@@ -50,16 +51,12 @@ constexpr std::size_t kMaxCapsules = 64;
 // Rounds of halving the moves of triangles that turn towards the centre.
 constexpr int kHalvingRounds = 6;
 
-// FNV-1a over the bits of a float position: vertices at one position (texture seam copies)
+// A hash of the bits of a float position: vertices at one position (texture seam copies)
 // hash alike.
 std::uint64_t positionHash(const Vec3f& p) {
-    std::uint64_t key = 1469598103934665603ull;
-    for (int k = 0; k < 3; ++k) {
-        std::uint32_t bits = 0;
-        std::memcpy(&bits, &p[k], sizeof bits);
-        key = (key ^ bits) * 1099511628211ull;
-    }
-    return key;
+    return hashCombine(
+        hashCombine(std::bit_cast<std::uint32_t>(p.x()), std::bit_cast<std::uint32_t>(p.y())),
+        std::bit_cast<std::uint32_t>(p.z()));
 }
 
 // Subdivides the hull faces of one junction (the last triangles of the mesh, from
