@@ -318,6 +318,65 @@ int windingOutside(const SurfaceMesh& m, const FaceTree& tree, FaceIndex f, cons
     return winding;
 }
 
+// The refined mesh renumbered in an order of its own. Autorefinement finds the intersections
+// in an order that depends on where the heap put its arrays of face and edge boxes (CGAL breaks
+// ties between boxes by their addresses), so the refined vertices and faces came out numbered
+// differently from one call to the next within a process, and so did the union (tree_3d_tropism
+// at 4 derivations: 3 of 20 rounds of SolidUnion.TheSameInputGivesTheSameSurface…). Vertices are
+// ordered by position (ties: their refined index, which for the input's vertices is their input
+// index), faces by their input triangle and then their corners, each face starting at its lowest
+// corner; the origin and the cut edges come along. Everything after this is deterministic.
+SurfaceMesh canonicalMesh(const SurfaceMesh& m,
+                          const SurfaceMesh::Property_map<FaceIndex, std::uint32_t>& origin,
+                          const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& cut) {
+    std::vector<std::uint32_t> byPosition(m.number_of_vertices());
+    std::iota(byPosition.begin(), byPosition.end(), 0u);
+    std::sort(byPosition.begin(), byPosition.end(), [&](std::uint32_t a, std::uint32_t b) {
+        const Point& p = m.point(VertexIndex(a));
+        const Point& q = m.point(VertexIndex(b));
+        if (p != q) return CGAL::lexicographically_xyz_smaller(p, q);
+        return a < b;
+    });
+    std::vector<std::uint32_t> rank(byPosition.size());
+    for (std::uint32_t i = 0; i < byPosition.size(); ++i) rank[byPosition[i]] = i;
+    struct Face {
+        std::uint32_t origin;
+        std::array<std::uint32_t, 3> corners;
+        auto operator<=>(const Face&) const = default;
+    };
+    std::vector<Face> faces;
+    faces.reserve(m.number_of_faces());
+    for (FaceIndex f : m.faces()) {
+        Face face{origin[f], {}};
+        int k = 0;
+        for (VertexIndex v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+            face.corners[static_cast<std::size_t>(k++)] = rank[v.idx()];
+        }
+        std::rotate(face.corners.begin(),
+                    std::min_element(face.corners.begin(), face.corners.end()), face.corners.end());
+        faces.push_back(face);
+    }
+    std::sort(faces.begin(), faces.end());
+    SurfaceMesh out;
+    out.reserve(m.number_of_vertices(), m.number_of_edges(), m.number_of_faces());
+    for (std::uint32_t v : byPosition) out.add_vertex(m.point(VertexIndex(v)));
+    auto outOrigin = out.add_property_map<FaceIndex, std::uint32_t>("f:origin", kUnknown).first;
+    for (const Face& face : faces) {
+        const FaceIndex f = out.add_face(VertexIndex(face.corners[0]), VertexIndex(face.corners[1]),
+                                         VertexIndex(face.corners[2]));
+        outOrigin[f] = face.origin;
+    }
+    auto outCut = out.add_property_map<SurfaceMesh::Edge_index, bool>("e:cut", false).first;
+    for (SurfaceMesh::Edge_index e : m.edges()) {
+        if (!cut[e]) continue;
+        const auto h = m.halfedge(e);
+        const auto g = out.halfedge(VertexIndex(rank[m.source(h).idx()]),
+                                    VertexIndex(rank[m.target(h).idx()]));
+        if (g != SurfaceMesh::null_halfedge()) outCut[out.edge(g)] = true;
+    }
+    return out;
+}
+
 // Per patch: whether it bounds the union (winding 0 just outside it, by a vote of 3 rays).
 std::vector<char> classifyPatches(const SurfaceMesh& m,
                                   const SurfaceMesh::Property_map<FaceIndex, std::size_t>& patch,
@@ -678,6 +737,9 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
         report.patches = report.keptPatches = report.outputComponents;
         return Outcome::done;
     }
+    m = canonicalMesh(m, origin, constrained);
+    origin = m.property_map<FaceIndex, std::uint32_t>("f:origin").first;
+    constrained = m.property_map<SurfaceMesh::Edge_index, bool>("e:cut").first;
 
     // 3. Patches on the union's boundary.
     auto patch = m.add_property_map<FaceIndex, std::size_t>("f:patch").first;

@@ -94,7 +94,6 @@ private:
     bool gatherJunctionShape(const Vec3& centre, double reach);
     void addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach);
     bool onArmRingEdge(std::uint32_t a, std::uint32_t b) const;
-    bool hasCrossingArm() const;
 
     const WeldedMeshParams& params_;
     WeldSkeleton skeleton_;

@@ -51,16 +51,21 @@ Vec3 corner(const Mesh& mesh, std::size_t t, int k) {
     return mesh.positions[mesh.indices[3 * t + static_cast<std::size_t>(k)]].cast<double>();
 }
 
-// Segment p→q crosses the interior of triangle (a, b, c) (Möller–Trumbore, strict).
-bool segmentHitsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
-                         const Vec3& c) {
+std::array<Vec3, 3> corners(const Mesh& mesh, std::size_t t) {
+    return {corner(mesh, t, 0), corner(mesh, t, 1), corner(mesh, t, 2)};
+}
+
+// Where segment p→q crosses the interior of triangle (a, b, c), as a fraction of the way from
+// p (Möller–Trumbore, strict); negative if it does not.
+double segmentHitOnTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
+                            const Vec3& c) {
     const Vec3 d = q - p;
     const Vec3 e1 = b - a;
     const Vec3 e2 = c - a;
     const Vec3 h = d.cross(e2);
     const double det = e1.dot(h);
     const double scale = e1.norm() * e2.norm() * d.norm();
-    if (std::abs(det) <= 1e-12 * scale) return false;  // parallel: not counted
+    if (std::abs(det) <= 1e-12 * scale) return -1.0;  // parallel: not counted
     const double inv = 1.0 / det;
     const Vec3 s = p - a;
     const double u = s.dot(h) * inv;
@@ -68,17 +73,29 @@ bool segmentHitsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3
     const double v = d.dot(qv) * inv;
     const double t = e2.dot(qv) * inv;
     constexpr double kEps = 1e-7;
-    return u > kEps && v > kEps && u + v < 1.0 - kEps && t > kEps && t < 1.0 - kEps;
+    const bool hit = u > kEps && v > kEps && u + v < 1.0 - kEps && t > kEps && t < 1.0 - kEps;
+    return hit ? t : -1.0;
+}
+
+// Calls visit(point) where an edge of triangle `a` crosses the interior of triangle `b`.
+template <typename Visit>
+void forEachEdgeThrough(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b, Visit visit) {
+    for (int e = 0; e < 3; ++e) {
+        const Vec3& p = a[e];
+        const Vec3& q = a[(e + 1) % 3];
+        const double t = segmentHitOnTriangle(p, q, b[0], b[1], b[2]);
+        if (t >= 0.0) visit(Vec3(p + t * (q - p)));
+    }
 }
 
 bool trianglesIntersect(const Mesh& mesh, std::size_t s, std::size_t t) {
-    const std::array<Vec3, 3> a{corner(mesh, s, 0), corner(mesh, s, 1), corner(mesh, s, 2)};
-    const std::array<Vec3, 3> b{corner(mesh, t, 0), corner(mesh, t, 1), corner(mesh, t, 2)};
-    for (int e = 0; e < 3; ++e) {
-        if (segmentHitsTriangle(a[e], a[(e + 1) % 3], b[0], b[1], b[2])) return true;
-        if (segmentHitsTriangle(b[e], b[(e + 1) % 3], a[0], a[1], a[2])) return true;
-    }
-    return false;
+    const std::array<Vec3, 3> a = corners(mesh, s);
+    const std::array<Vec3, 3> b = corners(mesh, t);
+    bool hit = false;
+    auto found = [&](const Vec3&) { hit = true; };
+    forEachEdgeThrough(a, b, found);
+    forEachEdgeThrough(b, a, found);
+    return hit;
 }
 
 }  // namespace
@@ -203,6 +220,26 @@ std::size_t countSelfIntersections(const Mesh& mesh, std::size_t limit,
         }
     }
     return found;
+}
+
+double intersectionLength(const Mesh& mesh,
+                          const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+    double length = 0.0;
+    std::vector<Vec3> points;  // where an edge of either triangle passes through the other
+    auto add = [&](const Vec3& p) { points.push_back(p); };
+    for (const auto& [s, t] : pairs) {
+        const std::array<Vec3, 3> a = corners(mesh, s);
+        const std::array<Vec3, 3> b = corners(mesh, t);
+        points.clear();
+        forEachEdgeThrough(a, b, add);
+        forEachEdgeThrough(b, a, add);
+        double longest = 0.0;
+        for (const Vec3& p : points) {
+            for (const Vec3& q : points) longest = std::max(longest, (p - q).norm());
+        }
+        length += longest;
+    }
+    return length;
 }
 
 namespace {

@@ -54,6 +54,12 @@ std::size_t countSelfIntersections(
     const Mesh& mesh, std::size_t limit = 10,
     std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr);
 
+/// Total length of the segments along which the given pairs of triangles meet: the length of
+/// the intersection curves, which, unlike the number of pairs, does not grow when the surface
+/// is subdivided.
+double intersectionLength(const Mesh& mesh,
+                          const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
+
 /// Signed crossings of rays along ±d from a point with the triangles (+1 where the ray leaves a
 /// surface): the winding number of closed outward surfaces there, overlapping ones summed. d is
 /// an oblique direction (no plane of a flat plant holds it, so rays do not run along ring

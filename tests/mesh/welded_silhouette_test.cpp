@@ -245,33 +245,34 @@ struct Bounds {
 };
 
 // The examples beyond those tolerances, bounded at their values measured on 2026-12-04 after
-// session 18 shrank webbed junction hulls onto their branches (the largest of the three views,
-// docs/welded.md "Quality and limits") plus 15 %, rounded up: they must not grow. Nothing the
-// tubes show is missing in any of them (the hedges lose 0.11–0.18 % of their area, all within
-// 0.24 radii: twigs a pixel beside the tube ones). They gain silhouette where junction hulls
-// still span more than the crotch:
-// - ABOP 1.27 and 1.31a (and a little on 1.24a): junctions of clusters of tips whose limbs
-//   were absorbed or whose nodes merged, which keep their hulls because a limb between two of
-//   them is too short for both rings (a crossing; 1.27: 12 % of the area, up to 15 radii;
-//   before the solver change 30 % and 12 radii, 1.31a 48 % and 20.5).
-// - conifer: a bump beside the trunk, 11.8 radii of the twig passing there, at the junction of
-//   its one crossing limb (kept as a hull for the same reason).
-// - the hedges (0.52–1.3 % of the area; within 0.73 radii but hedge_1, 3.8) and fig3_2_ring
+// session 18 shrank webbed junction hulls onto their branches and session 19 shrank those at
+// crossings too (the largest of the three views, docs/welded.md "Quality and limits") plus
+// 15 %, rounded up: they must not grow. Nothing the tubes show is missing in any of them (the
+// hedges lose 0.11–0.18 % of their area, all within 0.24 radii: twigs a pixel beside the tube
+// ones). They gain silhouette where junction hulls still span more than the crotch:
+// - ABOP 1.27 and 1.31a: junctions over clusters of tips whose limbs were absorbed or whose
+//   nodes merged, subdivided no finer than 8 pieces per hull edge (a few tenths of a unit, the
+//   twigs are 0.04–0.1 thick) or, one on 1.27, with more than 64 segments in reach (1.27: 6.9 %
+//   of the area, up to 15 radii, 12 % as hulls at crossings before session 19, 30 % and 12
+//   radii before the solver change; 1.31a 4.1 % and 6.2, before the solver change 48 % and
+//   20.5). Shrinking the junctions at crossings brought 1.24a (1.6 % / 1.0 radius → 0.3 % /
+//   0.72) and conifer (a bump beside the trunk, 11.8 radii → 0.26) within the tolerances.
+// - the hedges (0.52–0.82 % of the area; within 0.73 radii but hedge_1, 2.3) and fig3_2_ring
 //   (1.3 radii): what is left of the base junctions where several main branches leave the
 //   trunk at once; before the shrinking they were one convex hull over the whole crotch
-//   (hedge_4: 2.2 % of the area, 6.9 radii; hedge_0–3 1.5–2.3 %, 2.4–3.8 radii).
+//   (hedge_4: 2.2 % of the area, 6.9 radii; hedge_0–3 1.5–2.3 %, 2.4–3.8 radii). hedge_1 was
+//   1.3 % and 3.8 radii until session 19 moved the rays' centre of a junction whose corners'
+//   mean lies outside the branches onto a branch axis.
 // Before the solver change (the rings of slow pairs leapfrogged out along their limbs) every
 // dense ABOP plant and every colonization tree was an exception here, e.g. 2.8a with 78 % of
 // the tube silhouette's area added up to 30 radii from it, 2.6d 90 % and 41 radii.
 const std::vector<std::pair<std::string, Bounds>>& exceptions() {
     static const std::vector<std::pair<std::string, Bounds>> kExceptions = {
-        {"abop_1_24a", {.gainedDistance = 1.2, .gainedArea = 0.019}},
-        {"abop_1_27", {.gainedDistance = 18.0, .gainedArea = 0.15}},
+        {"abop_1_27", {.gainedDistance = 18.0, .gainedArea = 0.08}},
         {"abop_1_31a", {.gainedDistance = 7.2, .gainedArea = 0.048}},
-        {"conifer_0", {.gainedDistance = 14.0, .gainedArea = 0.0055}},
         {"fig3_2_ring_0", {.gainedDistance = 1.6}},
         {"hedge_0", {.lostArea = 0.0021, .gainedArea = 0.0095}},
-        {"hedge_1", {.lostArea = 0.0014, .gainedDistance = 4.4, .gainedArea = 0.015}},
+        {"hedge_1", {.lostArea = 0.0014, .gainedDistance = 2.7, .gainedArea = 0.0083}},
         {"hedge_2", {.lostArea = 0.0015, .gainedArea = 0.006}},
         {"hedge_3", {.lostArea = 0.0015, .gainedArea = 0.0079}},
         {"hedge_4", {.lostArea = 0.0013, .gainedArea = 0.0074}},
