@@ -174,8 +174,10 @@ TEST_F(Studio, DerivesAnLSystemWithTheLibrarysModuleCount) {
 }
 
 // The bark options of the L-system panel: welding a dense plant (ABOP 1.27: crowded junctions)
-// leaves pieces, which the reply counts and warns of; the union (on a small tree, within the
-// time budget) makes it one surface, without a warning; a wrong type names the key.
+// leaves pieces, which the reply counts and warns of; convex junctions keep the hulls the weld
+// otherwise shrinks onto the branches (fewer triangles); the union (on a small tree, within the
+// time budget) makes it one surface, without a warning; a wrong type names the key, and convex
+// junctions without welding are refused.
 TEST_F(Studio, WeldsAndUnitesTheBarkAndWarnsOfPieces) {
     const std::string dense = readFile(RAMUS_SOURCE_DIR "/examples/lsystems/abop_1_27.lsys");
     const Reply welded = post("/api/lsystem", json{{"text", dense}, {"mesh", {{"weld", true}}}});
@@ -188,6 +190,14 @@ TEST_F(Studio, WeldsAndUnitesTheBarkAndWarnsOfPieces) {
     EXPECT_FALSE(tubes.body["stats"].contains("weld_fallbacks"));
     EXPECT_TRUE(tubes.body["warnings"].empty());
     EXPECT_NE(tubes.body["stats"]["triangles"], welded.body["stats"]["triangles"]);
+    const Reply convex =
+        post("/api/lsystem",
+             json{{"text", dense}, {"mesh", {{"weld", true}, {"convex_junctions", true}}}});
+    ASSERT_EQ(convex.status, 200) << convex.body.dump().substr(0, 300);
+    EXPECT_GT(welded.body["stats"]["weld_shrunk_junctions"].get<int>(), 0);
+    EXPECT_EQ(convex.body["stats"]["weld_shrunk_junctions"], 0);
+    EXPECT_LT(convex.body["stats"]["triangles"].get<int>(),
+              welded.body["stats"]["triangles"].get<int>());
 
     const std::string small = readFile(RAMUS_SOURCE_DIR "/examples/lsystems/tree_3d.lsys");
     const Reply united = post(
@@ -202,6 +212,12 @@ TEST_F(Studio, WeldsAndUnitesTheBarkAndWarnsOfPieces) {
     EXPECT_NE(wrong.body["error"]["message"].get<std::string>().find("mesh.weld"),
               std::string::npos)
         << wrong.body.dump();
+    const Reply tubesConvex =
+        post("/api/lsystem", json{{"text", small}, {"mesh", {{"convex_junctions", true}}}});
+    EXPECT_EQ(tubesConvex.status, 400);
+    EXPECT_NE(tubesConvex.body["error"]["message"].get<std::string>().find("mesh.convex_junctions"),
+              std::string::npos)
+        << tubesConvex.body.dump();
 }
 
 TEST_F(Studio, ReportsASyntaxErrorAtItsLineAndColumn) {

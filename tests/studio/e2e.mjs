@@ -105,6 +105,15 @@ async function run(page, url) {
   await page.click('#ls-generate');
   status = await waitForStatus(page, /done|error/);
   check('welded bark warns of pieces', status.includes('not one clean surface'), status);
+  // Convex junctions: the request carries the option, and the reply counts no shrunk junction.
+  await page.check('#ls-convex');
+  const convexReply = page.waitForResponse((r) => r.url().endsWith('/api/lsystem'));
+  await page.click('#ls-generate');
+  const convexBody = await (await convexReply).json();
+  status = await waitForStatus(page, /done|error/);
+  check('convex junctions keep the hulls', convexBody.stats?.weld_shrunk_junctions === 0,
+        JSON.stringify(convexBody.stats));
+  await page.uncheck('#ls-convex');
   await page.uncheck('#ls-weld');
   await page.selectOption('#ls-preset', 'koch_island');
   const text = await page.inputValue('#ls-text');

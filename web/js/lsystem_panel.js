@@ -63,6 +63,7 @@ export class LsystemPanel {
     if (seed !== '') body.seed = Number(seed);
     if ($('ls-weld').checked || $('ls-union').checked) {
       body.mesh = { weld: true, union: $('ls-union').checked };
+      if ($('ls-convex').checked) body.mesh.convex_junctions = true;
     }
     return body;
   }

@@ -22,7 +22,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // The request's "mesh" object: the tube settings, and whether the bark is welded into one
-// surface ("weld") or also united ("union", implies weld), as `ramus lsystem --weld / --union`.
+// surface ("weld") or also united ("union", implies weld), as `ramus lsystem --weld / --union`,
+// and whether welded junctions keep their convex hulls ("convex_junctions", as
+// `--convex-junctions`: only with weld or union).
 TreeMeshParams meshParamsFrom(const nlohmann::json& request) {
     TreeMeshParams mesh;
     TubeMeshParams& params = mesh.tube;
@@ -48,11 +50,14 @@ TreeMeshParams meshParamsFrom(const nlohmann::json& request) {
             mesh.weldJunctions = boolean(value, path);
         } else if (key == "union") {
             mesh.solidUnion = boolean(value, path);
+        } else if (key == "convex_junctions") {
+            mesh.convexJunctions = boolean(value, path);
         } else {
             throw ApiError(400, path +
                                     ": unknown key; expected leaf_radius, radius_exponent, "
                                     "trunk_multiplier, min_segments, max_segments, "
-                                    "curve_reduction, cap_tips, weld or union");
+                                    "curve_reduction, cap_tips, weld, union or "
+                                    "convex_junctions");
         }
     }
     if (params.maxSegments < params.minSegments) {
@@ -61,6 +66,11 @@ TreeMeshParams meshParamsFrom(const nlohmann::json& request) {
                                 std::to_string(params.maxSegments));
     }
     mesh.weldJunctions = mesh.weldJunctions || mesh.solidUnion;
+    if (mesh.convexJunctions && !mesh.weldJunctions) {
+        throw ApiError(400,
+                       "mesh.convex_junctions: only with mesh.weld or mesh.union (the tube "
+                       "bark has no junctions to keep convex)");
+    }
     return mesh;
 }
 
