@@ -29,8 +29,10 @@ struct WeldedMeshParams {
     bool solidUnion = false;
     /// Junctions whose convex hull spans far past the branches (a web over a crotch where
     /// several branches leave at small angles) are subdivided and shrunk onto the branches'
-    /// filleted surface, staying free of self-intersections (docs/welded.md, "Shrunk
-    /// junctions"). Not together with solidUnion, which keeps the hulls.
+    /// filleted surface; a shrunk junction does not intersect itself, and two at a crossing
+    /// (a limb too short for both rings) overlap each other as their hulls did
+    /// (docs/welded.md, "Shrunk junctions"). Not together with solidUnion, which keeps the
+    /// hulls.
     bool shrinkJunctions = true;
 };
 
