@@ -123,6 +123,7 @@ void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
     if (report.unionsApplied + report.unionsFailed > 0) {
         stats["unions_applied"] = report.unionsApplied;
         stats["unions_failed"] = report.unionsFailed;
+        stats["unions_of_convex_junctions"] = report.unionsOfHulls;
         stats["union_crossings_left"] = report.crossingsLeft;
         stats["union_pinched_edges"] = report.pinchedEdges;
         stats["union_crossing_moves"] = report.crossingMoves;

@@ -36,7 +36,8 @@ struct TreeMeshParams {
     bool solidUnion = false;
     /// With weldJunctions: keep every junction the convex hull of its rings
     /// (WeldedMeshParams::shrinkJunctions off): fewer triangles, but webs over the crotches
-    /// where several branches leave at small angles.
+    /// where several branches leave at small angles. (Without it, a union whose shrunk
+    /// junctions do not unite cleanly unites the hulls: WeldReport::convexForUnion.)
     bool convexJunctions = false;
     bool leaves = false;  ///< generate leaves (buildLeafMesh) besides the polygons
     LeafParams leaf;      ///< generated leaves, and the atlas, seed and LOD keep of the polygons
@@ -56,7 +57,9 @@ struct TreeMeshReport {
     std::size_t shrunkJunctions = 0;  ///< WeldReport::refinedJunctions over them
     std::size_t unionsApplied = 0;    ///< tree meshes replaced by their union's surface
     std::size_t unionsFailed = 0;     ///< tree meshes left welded (overlapping), see firstFailure
-    std::string firstFailure;         ///< SolidUnionReport::failure of the first failed one
+    std::size_t unionsOfHulls =
+        0;                     ///< unions made of convex junctions (WeldReport::convexForUnion)
+    std::string firstFailure;  ///< SolidUnionReport::failure of the first failed one
     /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges and
     /// ::crossingMoves.
     std::size_t crossingsLeft = 0, pinchedEdges = 0, crossingMoves = 0;

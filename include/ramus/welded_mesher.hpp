@@ -31,8 +31,8 @@ struct WeldedMeshParams {
     /// several branches leave at small angles) are subdivided and shrunk onto the branches'
     /// filleted surface; a shrunk junction does not intersect itself, and two at a crossing
     /// (a limb too short for both rings) overlap each other as their hulls did
-    /// (docs/welded.md, "Shrunk junctions"). Not together with solidUnion, which keeps the
-    /// hulls.
+    /// (docs/welded.md, "Shrunk junctions"). With solidUnion the shrunk junctions are united
+    /// first; where that union is not clean (see WeldReport::convexForUnion) the hulls are.
     bool shrinkJunctions = true;
 };
 
@@ -59,6 +59,10 @@ struct WeldReport {
     /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).
     std::size_t junctionTriangles = 0;
     SolidUnionReport solidUnion;  ///< with WeldedMeshParams::solidUnion
+    /// With solidUnion and shrinkJunctions: the union of the shrunk junctions failed or kept
+    /// crossings or pinched edges, and that of the convex hulls had fewer, so the hulls were
+    /// united instead (the counts above are then the convex welding's: refinedJunctions 0).
+    bool convexForUnion = false;
 };
 
 /// Meshes `tree` as closed surfaces: one per part of the tree connected by drawn edges

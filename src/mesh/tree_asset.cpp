@@ -61,8 +61,7 @@ public:
         WeldedMeshParams welded;
         welded.tube = tube;
         welded.solidUnion = d.solidUnion;
-        // The LOD planner's trials are not united, but must mesh as the united levels do.
-        welded.shrinkJunctions = !params_.convexJunctions && !params_.solidUnion;
+        welded.shrinkJunctions = !params_.convexJunctions;
         WeldReport weld;
         Mesh mesh = buildWeldedTreeMesh(tree, welded, &weld);
         if (d.reported && report_ != nullptr) {
@@ -74,6 +73,7 @@ public:
         if (d.solidUnion && report_ != nullptr) {
             if (weld.solidUnion.applied) {
                 ++report_->unionsApplied;
+                if (weld.convexForUnion) ++report_->unionsOfHulls;
                 report_->crossingsLeft += weld.solidUnion.remainingIntersections;
                 report_->pinchedEdges += weld.solidUnion.pinchedEdges;
                 report_->crossingMoves += weld.solidUnion.crossingMoves;

@@ -327,10 +327,7 @@ void WeldBuilder::meshJunction(NodeId cluster) {
         closed = hullJunction();
     }
     if (closed) {
-        // Not before a solid union: shrunk junctions hug neighbouring branches within a few
-        // hundredths of their radius, and the union's rounding left crossings there (ABOP 2.8c:
-        // 572 pairs, multi_trunk_0 a pinched edge; make union-check, session 18).
-        if (params_.shrinkJunctions && !params_.solidUnion) refineJunction(before);
+        if (params_.shrinkJunctions) refineJunction(before);
         return;
     }
     mesh_.indices.resize(before);

@@ -37,6 +37,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "ramus/error.hpp"
 #include "welded_builder.hpp"
@@ -422,6 +424,16 @@ Mesh WeldBuilder::build(WeldReport* report) {
 
 namespace ramus {
 
+namespace {
+
+// Crossing pairs and pinched edges a union left; a union that failed counts as worst.
+std::size_t unionDefects(const SolidUnionReport& united) {
+    return united.applied ? united.remainingIntersections + united.pinchedEdges
+                          : std::numeric_limits<std::size_t>::max();
+}
+
+}  // namespace
+
 Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
                          WeldReport* report) {
     if (report != nullptr) *report = WeldReport{};
@@ -430,10 +442,28 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
         empty.name = "tree";
         return empty;
     }
-    Mesh mesh = detail::WeldBuilder(tree, params).build(report);
+    WeldReport weld;
+    Mesh mesh = detail::WeldBuilder(tree, params).build(&weld);
     if (params.solidUnion) {
-        unionClosedSurfaces(mesh, report != nullptr ? &report->solidUnion : nullptr);
+        unionClosedSurfaces(mesh, &weld.solidUnion);
+        // Shrunk junctions hug neighbouring branches within hundredths of a radius; where the
+        // union's cut, rounded to float, leaves such grazes crossing or pinched (ABOP 1.24a,
+        // 2.8c, multi_trunk_0: make union-check, session 20), the convex hulls, which keep
+        // their distance, may unite cleanly. The better union is kept, the shrunk one on a tie.
+        if (params.shrinkJunctions && unionDefects(weld.solidUnion) > 0) {
+            WeldedMeshParams hulls = params;
+            hulls.shrinkJunctions = false;
+            WeldReport convexWeld;
+            Mesh convex = detail::WeldBuilder(tree, hulls).build(&convexWeld);
+            unionClosedSurfaces(convex, &convexWeld.solidUnion);
+            if (unionDefects(convexWeld.solidUnion) < unionDefects(weld.solidUnion)) {
+                mesh = std::move(convex);
+                weld = std::move(convexWeld);
+                weld.convexForUnion = true;
+            }
+        }
     }
+    if (report != nullptr) *report = std::move(weld);
     return mesh;
 }
 

@@ -397,16 +397,19 @@ BranchTree growLSystem(const std::string& file, int derivations) {
     return interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings)).tree;
 }
 
-void forEachColonizationTree(const std::function<void(const std::string&, const BranchTree&,
-                                                      const WeldedMeshParams&)>& visit) {
+void forEachTreeOf(const std::string& file, const ColonizationTreeVisitor& visit) {
+    const ColonizeConfig config = loadColonizeConfig(file);
+    const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
+    WeldedMeshParams params;
+    applyMeshOverrides(config, params.tube);
+    for (std::size_t t = 0; t < result.trees.size(); ++t) {
+        visit(stem(file) + "_" + std::to_string(t), result.trees[t], params);
+    }
+}
+
+void forEachColonizationTree(const ColonizationTreeVisitor& visit) {
     for (const std::string& file : exampleFiles("/examples/colonize", ".json")) {
-        const ColonizeConfig config = loadColonizeConfig(file);
-        const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
-        WeldedMeshParams params;
-        applyMeshOverrides(config, params.tube);
-        for (std::size_t t = 0; t < result.trees.size(); ++t) {
-            visit(stem(file) + "_" + std::to_string(t), result.trees[t], params);
-        }
+        forEachTreeOf(file, visit);
     }
 }
 

@@ -132,11 +132,17 @@ std::string stem(const std::string& path);
 /// The tree the L-system file `file` grows at `derivations` (-1: the file's default).
 BranchTree growLSystem(const std::string& file, int derivations = -1);
 
-/// Calls visit(name, tree, params) for every tree of every colonization example
-/// (examples/colonize/*.json, sorted; name "<file stem>_<tree index>"), with the welded
-/// meshing parameters its config's `mesh` object sets.
-void forEachColonizationTree(const std::function<void(const std::string&, const BranchTree&,
-                                                      const WeldedMeshParams&)>& visit);
+/// The visitor of colonization trees: (name, tree, the welded meshing parameters its config's
+/// `mesh` object sets).
+using ColonizationTreeVisitor =
+    std::function<void(const std::string&, const BranchTree&, const WeldedMeshParams&)>;
+
+/// Calls visit for every tree the colonization config `file` grows (name "<file stem>_<tree
+/// index>").
+void forEachTreeOf(const std::string& file, const ColonizationTreeVisitor& visit);
+
+/// forEachTreeOf every colonization example (examples/colonize/*.json, sorted).
+void forEachColonizationTree(const ColonizationTreeVisitor& visit);
 
 /// Writes `mesh` as <$RAMUS_TEST_OUTPUT>/welded_<name>.glb when the variable is set.
 void writeWeldedGlb(const Mesh& mesh, const std::string& name);
