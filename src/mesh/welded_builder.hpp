@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "ramus/mesh.hpp"
@@ -41,12 +42,28 @@ struct JunctionShape {
         /// The axis point nearest to `p` (tapered radius linear along the axis).
         Point nearest(const Vec3& p) const;
     };
+    /// A capsule and a lower bound of its surface's distance from every point of a segment.
+    struct Bound {
+        double distance;
+        std::uint32_t capsule;
+        bool operator<(const Bound& o) const {
+            return distance < o.distance || (distance == o.distance && capsule < o.capsule);
+        }
+    };
     std::vector<Capsule> capsules;
     double thinnest = 0.0;  ///< radius of the junction's thinnest arm
     double fillet = 0.0;    ///< blend width of the smooth minimum
     /// Signed distance to the union of the capsules, smoothed by the fillet (< 0 inside);
     /// `gradient` (optional) receives its direction of steepest ascent (about unit length).
     double distance(const Vec3& p, Vec3* gradient = nullptr) const;
+    /// The distance to the nearest capsule's surface, without the fillet.
+    double plainDistance(const Vec3& p) const;
+    /// distance(p, gradient) folding the capsules in `order` (bounds for a segment holding p,
+    /// nearest first; those that cannot change the distance may be left out) up
+    /// to the first whose bound shows that it and all after it leave the result as it is: the
+    /// value of folding them all in that order, for a fraction of the work where hundreds of
+    /// branch segments are in reach and a few are near.
+    double distance(const Vec3& p, std::span<const Bound> order, Vec3* gradient = nullptr) const;
     /// Whether `p` lies more than `limit` local radii outside the capsules (without the
     /// fillet; welded_junction_refine.cpp says which radius).
     bool farOutside(const Vec3& p, double limit) const;

@@ -49,11 +49,12 @@ constexpr double kCentreDepth = 0.5;
 // Junctions with more branch segments than this within reach of their hull keep it: in a
 // tangle of branches (a dense synthetic binary tree: thousands per junction) shrinking would
 // cost time growing with the density, and the hull hides little there. The shipped examples
-// have at most 36 (hedge; the median junction 3–4) but for one of ABOP 1.27 with 65. A cap of
-// 256 shrank that one too (1.27's silhouette gain 15 → 11.5 radii) but more than halved the
-// welding speed of the synthetic trees (monopodial 1M edges 1.28 → 0.59 M triangles/s, session
-// 19), as every distance evaluation runs over all capsules in reach.
-constexpr std::size_t kMaxCapsules = 64;
+// have at most 66 (one junction of ABOP 1.27; hedge 36, the median junction 3–4). Session 19
+// measured this cap at 256 more than halving the welding speed of the synthetic trees
+// (monopodial 1M edges 1.28 → 0.59 M triangles/s) and kept 64; since session 20 a ray's
+// distance evaluations fold only the capsules near it, nearest first (orderFor), and the cap
+// of 256 costs monopodial about 15 % (docs/BENCHMARKS.md).
+constexpr std::size_t kMaxCapsules = 256;
 // Rounds of halving the moves of triangles that turn towards the centre.
 constexpr int kHalvingRounds = 6;
 
@@ -108,8 +109,10 @@ public:
             mesh_.indices.begin() + static_cast<std::ptrdiff_t>(first_), mesh_.indices.end());
         mesh_.indices.resize(first_);
         firstNew_ = static_cast<std::uint32_t>(mesh_.positions.size());
+        hullFaces_.clear();
         for (std::size_t f = 0; f < faces.size(); f += 3) {
             std::array<std::uint32_t, 3> v = {faces[f], faces[f + 1], faces[f + 2]};
+            hullFaces_.push_back({v, mesh_.indices.size(), 0});
             std::array<bool, 3> cut{};
             int cuts = 0;
             for (int e = 0; e < 3; ++e) {
@@ -133,6 +136,7 @@ public:
             } else {
                 grid(v);
             }
+            hullFaces_.back().end = mesh_.indices.size();
         }
     }
 
@@ -142,6 +146,13 @@ public:
     // vertices go back onto the hull. Copies of a vertex on a texture seam share one move.
     void shrink(const Vec3& centre, const std::vector<Vec3>& samples) {
         centre_ = centre;
+        centreDistance_ = shape_.plainDistance(centre);
+        spheres_.clear();
+        for (const JunctionShape::Capsule& c : shape_.capsules) {
+            const Vec3 middle = 0.5 * (c.a + c.b);
+            spheres_.emplace_back(middle.x(), middle.y(), middle.z(),
+                                  0.5 * (c.b - c.a).norm() + std::max(c.ra, c.rb));
+        }
         const std::size_t added = onHull_.size();
         target_.resize(added);
         for (std::size_t i = 0; i < added; ++i) target_[i] = restingPoint(onHull_[i]);
@@ -301,11 +312,12 @@ private:
     // Along the ray from hull point p to the centre, the first point inside the branches'
     // surface (marching by a quarter of the thinnest arm, then bisecting); p itself if the ray
     // meets none before the centre.
-    Vec3 restingPoint(const Vec3& p) const {
+    Vec3 restingPoint(const Vec3& p) {
         const double iso = kSurfaceOffset * shape_.thinnest;
         const Vec3 toCentre = centre_ - p;
         const double length = toCentre.norm();
-        double d = shape_.distance(p) - iso;
+        orderFor(p, centre_);
+        double d = shape_.distance(p, order_) - iso;
         if (!(length > 0.0) || d <= 0.0) return p;
         const Vec3 direction = toCentre / length;
         // Sphere tracing: no branch lies within d of a point d outside them (up to the taper,
@@ -314,7 +326,7 @@ private:
         double outside = 0.0, dOut = d;
         while (outside < length) {
             const double s = std::min(length, outside + std::max(0.8 * d, least));
-            d = shape_.distance(p + s * direction) - iso;
+            d = shape_.distance(p + s * direction, order_) - iso;
             if (d <= 0.0) return p + crossing(p, direction, outside, dOut, s, d) * direction;
             dOut = d;
             outside = s;
@@ -331,7 +343,7 @@ private:
         int side = 0;
         for (int k = 0; k < 32 && inside - outside > tolerance; ++k) {
             const double s = outside + (inside - outside) * dOut / (dOut - dIn);
-            const double d = shape_.distance(p + s * direction) - iso;
+            const double d = shape_.distance(p + s * direction, order_) - iso;
             if (std::abs(d) < 1e-2 * tolerance) return s;
             if (d > 0.0) {
                 outside = s;
@@ -368,17 +380,23 @@ private:
         return normal.dot(a - centre_) > 1e-3 * normal.norm() * (a - centre_).norm();
     }
     // The triangle whose cone from the centre holds q, or kNone.
+    // The faces of one hull face's subdivision cover it, so their cones from the centre
+    // divide its cone: only those of the hull face whose cone holds q are searched.
     std::size_t faceAbove(const Vec3& q) const {
-        const Vec3 d = q - centre_;
-        for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
-            const std::array<std::uint32_t, 3> v = face(f);
-            const Vec3 a = position(v[0]) - centre_, b = position(v[1]) - centre_,
-                       c = position(v[2]) - centre_;
-            if (d.dot(a.cross(b)) >= 0.0 && d.dot(b.cross(c)) >= 0.0 && d.dot(c.cross(a)) >= 0.0) {
-                return f;
+        for (const HullFace& hull : hullFaces_) {
+            if (!inCone(hull.corners, q)) continue;
+            for (std::size_t f = hull.begin; f < hull.end; f += 3) {
+                if (inCone(face(f), q)) return f;
             }
         }
         return kNone;
+    }
+    // q lies in the cone from the centre through the triangle with corners v.
+    bool inCone(const std::array<std::uint32_t, 3>& v, const Vec3& q) const {
+        const Vec3 d = q - centre_;
+        const Vec3 a = position(v[0]) - centre_, b = position(v[1]) - centre_,
+                   c = position(v[2]) - centre_;
+        return d.dot(a.cross(b)) >= 0.0 && d.dot(b.cross(c)) >= 0.0 && d.dot(c.cross(a)) >= 0.0;
     }
     // q lies on the centre's side of triangle f's plane.
     bool below(std::size_t f, const Vec3& q) const {
@@ -400,17 +418,46 @@ private:
         return any;
     }
 
+    // The capsules that can matter to the distance at points of the segment [a, b]: from any
+    // point x there, the surface nearest to the centre lies at most centreDistance_ + |x −
+    // centre| away, and capsules a fillet beyond that change nothing.
+    // The bound of a capsule: the distance from the segment to its bounding sphere (around its
+    // axis' midpoint, half its length plus its larger radius), below the distance to its
+    // surface from any point of the segment.
+    void orderFor(const Vec3& a, const Vec3& b) {
+        const double farthest = std::max((a - centre_).norm(), (b - centre_).norm());
+        const double beyond = centreDistance_ + farthest + shape_.fillet;
+        const Vec3 ab = b - a;
+        const double length2 = ab.squaredNorm();
+        order_.clear();
+        for (std::size_t i = 0; i < spheres_.size(); ++i) {
+            const Vec3 middle = spheres_[i].head<3>();
+            const double reach = beyond + spheres_[i].w();
+            const double t =
+                length2 > 0.0 ? std::clamp((middle - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+            const double apart2 = (middle - a - t * ab).squaredNorm();
+            if (reach <= 0.0 || apart2 >= reach * reach) continue;
+            order_.push_back({std::sqrt(apart2) - spheres_[i].w(), static_cast<std::uint32_t>(i)});
+        }
+        std::sort(order_.begin(), order_.end());
+    }
+
     // Normals of the new vertices: the surface's gradient (the same at seam copies).
     void setNormals() {
         for (std::size_t i = 0; i < onHull_.size(); ++i) {
             const Vec3 p = position(firstNew_ + static_cast<std::uint32_t>(i));
             Vec3 gradient;
-            shape_.distance(p, &gradient);
+            orderFor(p, p);
+            shape_.distance(p, order_, &gradient);
             if (!(gradient.norm() > 1e-6)) gradient = p - centre_;
             mesh_.normals[firstNew_ + i] = gradient.normalized().cast<float>();
         }
     }
 
+    struct HullFace {
+        std::array<std::uint32_t, 3> corners;
+        std::size_t begin, end;  // its faces in the index buffer once subdivided
+    };
     struct SplitEdge {
         std::uint32_t first;  // of its m − 1 vertices, counted from `from`
         std::uint32_t from;
@@ -419,6 +466,7 @@ private:
     WindAttributes* wind_;
     const JunctionShape& shape_;
     Vec3 centre_;
+    double centreDistance_ = 0.0;  // from the centre to the nearest capsule's surface
     std::size_t first_;
     int m_ = 2;
     std::uint32_t firstNew_ = 0;
@@ -430,6 +478,9 @@ private:
     std::vector<std::uint32_t> owner_;
     std::vector<double> share_;  // per owner: the fraction of its move made
     std::vector<std::uint32_t> grid_;
+    std::vector<JunctionShape::Bound> order_;  // the capsules by distance from a ray
+    std::vector<HullFace> hullFaces_;
+    std::vector<Vec4> spheres_;  // per capsule: around its axis' midpoint, holding it
 };
 
 }  // namespace
@@ -441,27 +492,66 @@ JunctionShape::Capsule::Point JunctionShape::Capsule::nearest(const Vec3& p) con
     return {p - a - t * ab, ra + t * (rb - ra)};
 }
 
-// Signed distance of `p` to the junction's branches (tapered capsules), smoothed by the
-// fillet: negative inside.
-double JunctionShape::distance(const Vec3& p, Vec3* gradient) const {
+namespace {
+
+// The signed distance to tapered capsules folded in one at a time, smoothed by the fillet.
+struct SmoothUnion {
+    const Vec3& p;
+    double fillet;
+    bool withGradient;
     double d = std::numeric_limits<double>::infinity();
+    double plain = std::numeric_limits<double>::infinity();  // the nearest surface's distance
     Vec3 g = Vec3::Zero();
-    for (const Capsule& c : capsules) {
-        const Capsule::Point q = c.nearest(p);
+
+    void add(const JunctionShape::Capsule& c) {
+        const JunctionShape::Capsule::Point q = c.nearest(p);
         const double length = q.offset.norm();
         const double di = length - q.radius;
         // Polynomial smooth minimum (Quilez): min(d, di) − fillet h²/4 with h = (fillet −
         // |d − di|) / fillet, which is min(d, di) once they differ by `fillet`. Its slope in d
         // is 1 − h/2 where d is the smaller, h/2 where it is the larger.
         const double h = std::max(fillet - std::abs(d - di), 0.0) / fillet;
-        if (gradient != nullptr && length > 0.0) {
+        if (withGradient && length > 0.0) {
             const double toNew = di < d ? 1.0 - 0.5 * h : 0.5 * h;
             g = (1.0 - toNew) * g + toNew * (q.offset / length);
         }
         d = std::min(d, di) - 0.25 * h * h * fillet;
+        plain = std::min(plain, di);
     }
-    if (gradient != nullptr) *gradient = g;
-    return d;
+    double result(Vec3* gradient) const {
+        if (gradient != nullptr) *gradient = g;
+        return d;
+    }
+};
+
+}  // namespace
+
+// Signed distance of `p` to the junction's branches (tapered capsules), smoothed by the
+// fillet: negative inside.
+double JunctionShape::distance(const Vec3& p, Vec3* gradient) const {
+    SmoothUnion sum{p, fillet, gradient != nullptr};
+    for (const Capsule& c : capsules) sum.add(c);
+    return sum.result(gradient);
+}
+
+double JunctionShape::plainDistance(const Vec3& p) const {
+    double plain = std::numeric_limits<double>::infinity();
+    for (const Capsule& c : capsules) {
+        const Capsule::Point q = c.nearest(p);
+        plain = std::min(plain, q.offset.norm() - q.radius);
+    }
+    return plain;
+}
+
+// A capsule whose surface lies at least a fillet beyond the nearest one's so far (d is at most
+// that) has h = 0: d and the gradient stay; so has every capsule after it in the order.
+double JunctionShape::distance(const Vec3& p, std::span<const Bound> order, Vec3* gradient) const {
+    SmoothUnion sum{p, fillet, gradient != nullptr};
+    for (const Bound& bound : order) {
+        if (bound.distance >= sum.plain + fillet) break;
+        sum.add(capsules[bound.capsule]);
+    }
+    return sum.result(gradient);
 }
 
 // The junction's own branches (its arms' and absorbed limbs' segments within `reach` of
