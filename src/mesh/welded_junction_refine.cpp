@@ -55,6 +55,14 @@ constexpr double kCentreDepth = 0.5;
 // distance evaluations fold only the capsules near it, nearest first (orderFor), and the cap
 // of 256 costs monopodial about 15 % (docs/BENCHMARKS.md).
 constexpr std::size_t kMaxCapsules = 256;
+// Centres tried for a junction not star-shaped from its first (docs/welded.md, "Shrunk
+// junctions", step 4), in all, and only where at most kMaxCentreCapsules branch segments are in
+// reach. Measured in session 20 (silhouettes, largest view, and monopodial 262k edges, paired
+// runs): up to 3 centres give ABOP 1.27 11.5 → 5.4 radii and hedge_1 2.3 → 0.66, as 5 or 8 do;
+// at 64 segments monopodial loses 6 % of its speed (1.34–1.38 → 1.26–1.29 M triangles/s), at
+// 128 24 % for 1.31a's worst junction (84 segments: 6.2 → 3.4 radii).
+constexpr std::size_t kMaxCentres = 3;
+constexpr std::size_t kMaxCentreCapsules = 64;
 // Rounds of halving the moves of triangles that turn towards the centre.
 constexpr int kHalvingRounds = 6;
 
@@ -154,6 +162,10 @@ public:
                                   0.5 * (c.b - c.a).norm() + std::max(c.ra, c.rb));
         }
         const std::size_t added = onHull_.size();
+        // From the flat subdivision (a shrink towards another centre may have moved them).
+        for (std::size_t i = 0; i < added; ++i) {
+            mesh_.positions[firstNew_ + i] = onHull_[i].cast<float>();
+        }
         target_.resize(added);
         for (std::size_t i = 0; i < added; ++i) target_[i] = restingPoint(onHull_[i]);
         findSeamCopies();
@@ -180,6 +192,24 @@ public:
             if (!halved) break;
         }
         setNormals();
+    }
+
+    // Whether every new vertex made its whole move.
+    bool allMoved() const {
+        return std::all_of(share_.begin(), share_.end(), [](double s) { return s == 1.0; });
+    }
+    // How far the junction's faces stay outside the branches' surface: the distance of each
+    // face's centre beyond it times the face's area, summed.
+    double excess() const {
+        const double iso = kSurfaceOffset * shape_.thinnest;
+        double sum = 0.0;
+        for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
+            const std::array<std::uint32_t, 3> v = face(f);
+            const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
+            const double out = shape_.distance((a + b + c) / 3.0) - iso;
+            if (out > 0.0) sum += out * 0.5 * (b - a).cross(c - a).norm();
+        }
+        return sum;
     }
 
 private:
@@ -692,6 +722,32 @@ void WeldBuilder::refineJunction(std::size_t firstIndex) {
     }
     refiner.subdivide();
     refiner.shrink(rayCentre, samples);
+    // A junction over several branch nodes (a crotch of merged nodes, a cluster of tips) need
+    // not be star-shaped from that centre; where moves had to be halved, the branch nodes of its
+    // arms that lie well inside the hull are tried as centres too (at most kMaxCentres in all),
+    // and the one that leaves the least of the surface outside the branches is kept.
+    if (!refiner.allMoved() && shape_.capsules.size() <= kMaxCentreCapsules) {
+        std::vector<Vec3> tried{rayCentre};
+        Vec3 best = rayCentre;
+        double least = refiner.excess();
+        for (const HullRing& h : hullRings_) {
+            if (tried.size() == kMaxCentres) break;
+            if (!h.hole() ||
+                std::any_of(tried.begin(), tried.end(),
+                            [&](const Vec3& t) { return (t - h.node).norm() < shape_.thinnest; }) ||
+                depthInHull(h.node) < kCentreDepth * shape_.thinnest) {
+                continue;
+            }
+            tried.push_back(h.node);
+            refiner.shrink(h.node, samples);
+            const double excess = refiner.excess();
+            if (excess < least) {
+                least = excess;
+                best = h.node;
+            }
+        }
+        if (best != tried.back()) refiner.shrink(best, samples);
+    }
     ++report_.refinedJunctions;
 }
 
