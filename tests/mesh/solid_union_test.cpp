@@ -8,9 +8,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "ramus/tree_asset.hpp"
@@ -84,7 +82,7 @@ bool expectOneCleanSurface(const std::string& name, const BranchTree& tree,
 TEST(SolidUnion, DenseWeldedPlantsBecomeOneSurface) {
     const BranchTree tree = growExample("abop_1_27", -1);
     ASSERT_GT(test::analyzeTopology(buildWeldedTreeMesh(tree)).components, 40u);
-    expectOneCleanSurface("abop_1_27", tree, WeldedMeshParams{});
+    EXPECT_FALSE(expectOneCleanSurface("abop_1_27", tree, WeldedMeshParams{}));  // shrunk
 }
 
 // Every shipped example, the 26 L-systems and every tree of the 10 colonization configs (make
@@ -111,24 +109,22 @@ TEST(SolidUnion, EveryExampleIsOneCleanSurface) {
 
 // The union of shrunk junctions, which hug neighbouring branches within hundredths of a radius,
 // can keep a crossing or a pinched edge where the cut is rounded to float; then the convex
-// hulls are united instead (multi_trunk_0: a pinched edge on all three attempts shrunk, clean
-// as hulls at the first). Where the shrunk union is clean it is kept (multi_trunk_1).
+// hulls are united instead, and kept only where that union is cleaner (convexForUnion says so:
+// multi_trunk_0 keeps a pinched edge on all three attempts shrunk and is clean as hulls at the
+// first). Where the shrunk union is clean it is kept (ABOP 1.27 in
+// DenseWeldedPlantsBecomeOneSurface). The ASan build takes about 90 s here (185 s while it also
+// united the shrunk junctions once more to see them fail, and multi_trunk_1): the cheapest
+// example with the fallback.
 TEST(SolidUnion, ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls) {
-    std::map<std::string, std::pair<BranchTree, WeldedMeshParams>> trees;
+    bool found = false;
     test::forEachTreeOf(
         RAMUS_SOURCE_DIR "/examples/colonize/multi_trunk.json",
         [&](const std::string& name, const BranchTree& tree, const WeldedMeshParams& params) {
-            trees.emplace(name, std::pair{tree, params});
+            if (name != "multi_trunk_0") return;
+            found = true;
+            EXPECT_TRUE(expectOneCleanSurface(name, tree, params));
         });
-    const auto& [pinched, pinchedParams] = trees.at("multi_trunk_0");
-    Mesh shrunk = buildWeldedTreeMesh(pinched, pinchedParams);
-    SolidUnionReport shrunkUnion;
-    unionClosedSurfaces(shrunk, &shrunkUnion);
-    ASSERT_GT(shrunkUnion.pinchedEdges + shrunkUnion.remainingIntersections, 0u)
-        << "multi_trunk_0's shrunk junctions unite cleanly now: find another example";
-    EXPECT_TRUE(expectOneCleanSurface("multi_trunk_0", pinched, pinchedParams));
-    const auto& [clean, cleanParams] = trees.at("multi_trunk_1");
-    EXPECT_FALSE(expectOneCleanSurface("multi_trunk_1", clean, cleanParams));
+    EXPECT_TRUE(found);
 }
 
 // An axis-aligned box [lo, hi] as 12 outward triangles (without shared corners between boxes).
