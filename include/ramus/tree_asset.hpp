@@ -57,8 +57,8 @@ struct TreeMeshReport {
     std::size_t shrunkJunctions = 0;  ///< WeldReport::refinedJunctions over them
     std::size_t unionsApplied = 0;    ///< tree meshes replaced by their union's surface
     std::size_t unionsFailed = 0;     ///< tree meshes left welded (overlapping), see firstFailure
-    std::size_t unionsOfHulls =
-        0;                     ///< unions made of convex junctions (WeldReport::convexForUnion)
+    /// Of the united meshes, those made of convex junctions (WeldReport::convexForUnion).
+    std::size_t unionsOfHulls = 0;
     std::string firstFailure;  ///< SolidUnionReport::failure of the first failed one
     /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges and
     /// ::crossingMoves.

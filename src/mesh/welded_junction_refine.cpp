@@ -448,12 +448,11 @@ private:
         return any;
     }
 
-    // The capsules that can matter to the distance at points of the segment [a, b]: from any
-    // point x there, the surface nearest to the centre lies at most centreDistance_ + |x −
-    // centre| away, and capsules a fillet beyond that change nothing.
-    // The bound of a capsule: the distance from the segment to its bounding sphere (around its
-    // axis' midpoint, half its length plus its larger radius), below the distance to its
-    // surface from any point of the segment.
+    // order_: the capsules that can matter to the distance at points of the segment [a, b],
+    // each with a bound (the distance from the segment to its bounding sphere, below the
+    // distance to its surface from any point of the segment), nearest first. From any point x
+    // of the segment the capsule surface nearest the centre lies at most centreDistance_ +
+    // |x − centre| away, and capsules bound a fillet beyond that change nothing.
     void orderFor(const Vec3& a, const Vec3& b) {
         const double farthest = std::max((a - centre_).norm(), (b - centre_).norm());
         const double beyond = centreDistance_ + farthest + shape_.fillet;
