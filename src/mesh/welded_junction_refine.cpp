@@ -564,12 +564,9 @@ double JunctionShape::distance(const Vec3& p, Vec3* gradient) const {
 }
 
 double JunctionShape::plainDistance(const Vec3& p) const {
-    double plain = std::numeric_limits<double>::infinity();
-    for (const Capsule& c : capsules) {
-        const Capsule::Point q = c.nearest(p);
-        plain = std::min(plain, q.offset.norm() - q.radius);
-    }
-    return plain;
+    SmoothUnion sum{p, fillet, false};
+    for (const Capsule& c : capsules) sum.add(c);
+    return sum.plain;
 }
 
 // A capsule whose surface lies at least a fillet beyond the nearest one's so far (d is at most
