@@ -69,6 +69,8 @@ struct JunctionShape {
     bool farOutside(const Vec3& p, double limit) const;
 };
 
+class JunctionRefiner;  // welded_junction_refine.cpp
+
 class WeldBuilder {
 public:
     WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params);
@@ -107,6 +109,8 @@ private:
 
     // welded_junction_refine.cpp
     void refineJunction(std::size_t firstIndex);
+    void tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
+                        const std::vector<Vec3>& samples);
     void gatherOwnShape(double reach, const Vec3& centre);
     bool gatherJunctionShape(const Vec3& centre, double reach);
     void addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach);

@@ -56,13 +56,26 @@ constexpr double kCentreDepth = 0.5;
 // of 256 costs monopodial about 15 % (docs/BENCHMARKS.md).
 constexpr std::size_t kMaxCapsules = 256;
 // Centres tried for a junction not star-shaped from its first (docs/welded.md, "Shrunk
-// junctions", step 4), in all, and only where at most kMaxCentreCapsules branch segments are in
-// reach. Measured in session 20 (silhouettes, largest view, and monopodial 262k edges, paired
-// runs): up to 3 centres give ABOP 1.27 11.5 → 5.4 radii and hedge_1 2.3 → 0.66, as 5 or 8 do;
-// at 64 segments monopodial loses 6 % of its speed (1.34–1.38 → 1.26–1.29 M triangles/s), at
-// 128 24 % for 1.31a's worst junction (84 segments: 6.2 → 3.4 radii).
+// junctions", step 4), in all, where at most kMaxCentreCapsules branch segments are in reach
+// (beyond, see kMaxExcessCentreCapsules). Measured in session 20 (silhouettes, largest view, and
+// monopodial 262k edges, paired runs): up to 3 centres give ABOP 1.27 11.5 → 5.4 radii and
+// hedge_1 2.3 → 0.66, as 5 or 8 do; at 64 segments monopodial loses 6 % of its speed (1.34–1.38
+// → 1.26–1.29 M triangles/s), at 128 24 % for 1.31a's worst junction (84 segments: 6.2 → 3.4
+// radii).
 constexpr std::size_t kMaxCentres = 3;
 constexpr std::size_t kMaxCentreCapsules = 64;
+// Junctions with more segments in reach, up to kMaxExcessCentreCapsules, try more centres too
+// where the faces around their halved moves leave much outside the branches: an excess
+// (excess(true)) of at least kLargeExcess thinnest radii cubed. Measured in session 21: ABOP
+// 1.31a's worst junction (84 segments) leaves 7.3·10⁴, and more centres take its silhouette
+// from 2.6 % / 6.2 radii to 2.0 % / 3.4. In the synthetic monopodial trees few junctions reach
+// it (262k edges: 4 of the 222 with 65–256 segments whose moves are halved; 16k: 2 of 96
+// shrunk, with 115 and 210 segments), but each try runs over all their segments: up to 256,
+// monopodial 16k lost 27 % of its speed (1.97 → 1.45 M triangles/s, paired), up to 128 6–8 %,
+// up to 96 nothing measurable. The excess of all their faces instead of those around halved
+// moves as the gate cost monopodial 262k about 10 %.
+constexpr std::size_t kMaxExcessCentreCapsules = 128;
+constexpr double kLargeExcess = 1e4;
 // Rounds of halving the moves of triangles that turn towards the centre.
 constexpr int kHalvingRounds = 6;
 
@@ -73,6 +86,8 @@ std::uint64_t positionHash(const Vec3f& p) {
         hashCombine(std::bit_cast<std::uint32_t>(p.x()), std::bit_cast<std::uint32_t>(p.y())),
         std::bit_cast<std::uint32_t>(p.z()));
 }
+
+}  // namespace
 
 // Subdivides the hull faces of one junction (the last triangles of the mesh, from
 // `firstIndex`) and moves the new vertices onto the branches.
@@ -199,12 +214,18 @@ public:
         return std::all_of(share_.begin(), share_.end(), [](double s) { return s == 1.0; });
     }
     // How far the junction's faces stay outside the branches' surface: the distance of each
-    // face's centre beyond it times the face's area, summed.
-    double excess() const {
+    // face's centre beyond it times the face's area, summed; `halvedOnly`: over the faces with
+    // a corner whose move was halved alone.
+    double excess(bool halvedOnly = false) const {
         const double iso = kSurfaceOffset * shape_.thinnest;
         double sum = 0.0;
         for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
             const std::array<std::uint32_t, 3> v = face(f);
+            if (halvedOnly && std::none_of(v.begin(), v.end(), [&](std::uint32_t u) {
+                    return u >= firstNew_ && share_[owner_[u - firstNew_]] < 1.0;
+                })) {
+                continue;
+            }
             const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
             const double out = shape_.distance((a + b + c) / 3.0) - iso;
             if (out > 0.0) sum += out * 0.5 * (b - a).cross(c - a).norm();
@@ -512,8 +533,6 @@ private:
     std::vector<Vec4> spheres_;  // per capsule: around its axis' midpoint, holding it
 };
 
-}  // namespace
-
 JunctionShape::Capsule::Point JunctionShape::Capsule::nearest(const Vec3& p) const {
     const Vec3 ab = b - a;
     const double length2 = ab.squaredNorm();
@@ -665,6 +684,43 @@ bool WeldBuilder::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
     return false;
 }
 
+// A junction over several branch nodes (a crotch of merged nodes, a cluster of tips) need
+// not be star-shaped from its first centre; where moves had to be halved, the branch nodes of
+// its arms that lie well inside the hull are tried as centres too (at most kMaxCentres in all),
+// and the one that leaves the least of the surface outside the branches is kept.
+// With many segments in reach (each try runs over all of them) only where the faces around the
+// halved moves leave much outside.
+void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
+                                 const std::vector<Vec3>& samples) {
+    const std::size_t segments = shape_.capsules.size();
+    if (segments > kMaxExcessCentreCapsules ||
+        (segments > kMaxCentreCapsules && refiner.excess(true) < kLargeExcess * shape_.thinnest *
+                                                                     shape_.thinnest *
+                                                                     shape_.thinnest)) {
+        return;
+    }
+    double least = refiner.excess();
+    std::vector<Vec3> tried{first};
+    Vec3 best = first;
+    for (const HullRing& h : hullRings_) {
+        if (tried.size() == kMaxCentres) break;
+        if (!h.hole() ||
+            std::any_of(tried.begin(), tried.end(),
+                        [&](const Vec3& t) { return (t - h.node).norm() < shape_.thinnest; }) ||
+            depthInHull(h.node) < kCentreDepth * shape_.thinnest) {
+            continue;
+        }
+        tried.push_back(h.node);
+        refiner.shrink(h.node, samples);
+        const double excess = refiner.excess();
+        if (excess < least) {
+            least = excess;
+            best = h.node;
+        }
+    }
+    if (best != tried.back()) refiner.shrink(best, samples);
+}
+
 // Junctions at a crossing (a limb between two of them too short for both rings, which pass
 // each other) are shrunk too: their hulls overlap and cut through each other whether shrunk
 // or not, along curves of about the same length (conifer: 58.3 units as hulls, 59.2 shrunk), and
@@ -718,33 +774,8 @@ void WeldBuilder::refineJunction(std::size_t firstIndex) {
     }
     refiner.subdivide();
     refiner.shrink(rayCentre, samples);
-    // A junction over several branch nodes (a crotch of merged nodes, a cluster of tips) need
-    // not be star-shaped from that centre; where moves had to be halved, the branch nodes of its
-    // arms that lie well inside the hull are tried as centres too (at most kMaxCentres in all),
-    // and the one that leaves the least of the surface outside the branches is kept.
-    if (!refiner.allMoved() && shape_.capsules.size() <= kMaxCentreCapsules) {
-        std::vector<Vec3> tried{rayCentre};
-        Vec3 best = rayCentre;
-        double least = refiner.excess();
-        for (const HullRing& h : hullRings_) {
-            if (tried.size() == kMaxCentres) break;
-            if (!h.hole() ||
-                std::any_of(tried.begin(), tried.end(),
-                            [&](const Vec3& t) { return (t - h.node).norm() < shape_.thinnest; }) ||
-                depthInHull(h.node) < kCentreDepth * shape_.thinnest) {
-                continue;
-            }
-            tried.push_back(h.node);
-            refiner.shrink(h.node, samples);
-            const double excess = refiner.excess();
-            if (excess < least) {
-                least = excess;
-                best = h.node;
-            }
-        }
-        if (best != tried.back()) refiner.shrink(best, samples);
-    }
     ++report_.refinedJunctions;
+    if (!refiner.allMoved()) tryMoreCentres(refiner, rayCentre, samples);
 }
 
 }  // namespace ramus::detail

@@ -256,7 +256,11 @@ struct Bounds {
 //   halved (1.27: 4.8 % of the area, up to 5.4 radii; 5.1 % and 11.5 with one centre, and 6.9 %
 //   and 15 while one junction with 65 segments in reach stayed a hull, before session 20; 12 % as
 //   hulls at crossings before session 19, 30 % and 12 radii before the solver change; 1.31a
-//   2.6 % and 6.2, 4.1 % before session 20, 48 % and 20.5 before the solver change). Shrinking
+//   2.0 % and 3.4 since session 21 tried more centres for its worst junction, 84 segments in
+//   reach; 2.6 % and 6.2 before, 4.1 % before session 20, 48 % and 20.5 before the solver
+//   change). Finer subdivision makes them worse (1.27 at 16 or 32 pieces per edge: 15 radii):
+//   its worst junction makes all its moves, and its coarse faces span crotches a finer surface
+//   would have to fold into, seen from the centre, so their moves are halved. Shrinking
 //   the junctions at crossings brought 1.24a (1.6 % / 1.0 radius → 0.3 % / 0.72) and conifer
 //   (a bump beside the trunk, 11.8 radii → 0.26) within the tolerances.
 // - the hedges (0.47–0.82 % of the area, within 0.73 radii) and fig3_2_ring (1.3 radii): what
@@ -271,7 +275,7 @@ struct Bounds {
 const std::vector<std::pair<std::string, Bounds>>& exceptions() {
     static const std::vector<std::pair<std::string, Bounds>> kExceptions = {
         {"abop_1_27", {.gainedDistance = 6.2, .gainedArea = 0.055}},
-        {"abop_1_31a", {.gainedDistance = 7.2, .gainedArea = 0.031}},
+        {"abop_1_31a", {.gainedDistance = 3.9, .gainedArea = 0.023}},
         {"fig3_2_ring_0", {.gainedDistance = 1.6}},
         {"hedge_0", {.lostArea = 0.0021, .gainedArea = 0.0095}},
         {"hedge_1", {.lostArea = 0.0014}},
