@@ -160,6 +160,13 @@ private:
     std::vector<std::int32_t> pointIndex_;  // per hull point: vertex in its ring, -1 = apex
     std::vector<int> coneFaces_;
     ConvexHull hull_;
+    // Per face of hull_, for depthInHull: its outward unit normal and the normal's dot with
+    // its points (relative to hullRings_.front()'s centre, as points_).
+    struct Plane {
+        Vec3 normal;
+        double offset;
+    };
+    std::vector<Plane> hullPlanes_;
 
     JunctionShape shape_;
     std::unique_ptr<SegmentGrid> segments_;  // built on the first junction shrunk

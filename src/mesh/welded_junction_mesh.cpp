@@ -94,6 +94,13 @@ bool WeldBuilder::hullJunction() {
         points_[p] += 1e-9 * extent * Vec3(hashUnit(seed), hashUnit(seed + 1), hashUnit(seed + 2));
     }
     if (!hull_.build(points_, 1e-11 * extent)) return false;
+    hullPlanes_.clear();
+    for (const auto& face : hull_.faces()) {
+        const Vec3& a = points_[face[0]];
+        const Vec3 normal = (points_[face[1]] - a).cross(points_[face[2]] - a);
+        const double length = normal.norm();
+        if (length > 0.0) hullPlanes_.push_back({normal / length, a.dot(normal) / length});
+    }
 
     // Each hole: n faces at its apex, each on one ring edge, wound as the tube expects (a ring
     // that starts its limb is seen from behind by the hull, one that ends it from the front).
@@ -124,15 +131,14 @@ bool WeldBuilder::hullJunction() {
     return true;
 }
 
-// How far `point` lies inside the last hull built (negative: outside).
+// How far `point` lies inside the last hull built; negative outside (then not how far: the
+// callers only ask whether it is at least some depth).
 double WeldBuilder::depthInHull(const Vec3& point) const {
     const Vec3 p = point - hullRings_.front().ring.center;  // hull points are relative to it
     double depth = std::numeric_limits<double>::infinity();
-    for (const auto& face : hull_.faces()) {
-        const Vec3& a = points_[face[0]];
-        const Vec3 normal = (points_[face[1]] - a).cross(points_[face[2]] - a);
-        const double length = normal.norm();
-        if (length > 0.0) depth = std::min(depth, (a - p).dot(normal) / length);
+    for (const Plane& plane : hullPlanes_) {
+        depth = std::min(depth, plane.offset - plane.normal.dot(p));
+        if (depth < 0.0) break;
     }
     return depth;
 }
