@@ -693,10 +693,10 @@ bool WeldBuilder::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
 void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
                                  const std::vector<Vec3>& samples) {
     const std::size_t segments = shape_.capsules.size();
-    if (segments > kMaxExcessCentreCapsules ||
-        (segments > kMaxCentreCapsules && refiner.excess(true) < kLargeExcess * shape_.thinnest *
-                                                                     shape_.thinnest *
-                                                                     shape_.thinnest)) {
+    if (segments > kMaxExcessCentreCapsules) return;
+    const double thinnest = shape_.thinnest;
+    if (segments > kMaxCentreCapsules &&
+        refiner.excess(true) < kLargeExcess * thinnest * thinnest * thinnest) {
         return;
     }
     double least = refiner.excess();
@@ -706,8 +706,8 @@ void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
         if (tried.size() == kMaxCentres) break;
         if (!h.hole() ||
             std::any_of(tried.begin(), tried.end(),
-                        [&](const Vec3& t) { return (t - h.node).norm() < shape_.thinnest; }) ||
-            depthInHull(h.node) < kCentreDepth * shape_.thinnest) {
+                        [&](const Vec3& t) { return (t - h.node).norm() < thinnest; }) ||
+            depthInHull(h.node) < kCentreDepth * thinnest) {
             continue;
         }
         tried.push_back(h.node);
