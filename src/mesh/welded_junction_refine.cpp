@@ -55,6 +55,13 @@ constexpr double kCentreDepth = 0.5;
 // distance evaluations fold only the capsules near it, nearest first (orderFor), and the cap
 // of 256 costs monopodial about 15 % (docs/BENCHMARKS.md).
 constexpr std::size_t kMaxCapsules = 256;
+// And junctions whose reach meets the boxes of more than this many segments (candidates, of
+// which those in reach are a part) keep it too, without counting those in reach: in a tangle
+// that count stopped only at the cap, after about 6 500 candidates per junction (synthetic
+// binary tree, 262k edges: 8 499 of its 8 534 junctions with webs were over the cap, and
+// counting took a fifth of its welding time; session 22). The shipped examples visit at most
+// 202 candidates per junction, monopodial 262k 1 528 for a junction under the cap.
+constexpr std::size_t kMaxCandidates = 8 * kMaxCapsules;
 // Centres tried for a junction not star-shaped from its first (docs/welded.md, "Shrunk
 // junctions", step 4), in all, where at most kMaxCentreCapsules branch segments are in reach
 // (beyond, see kMaxExcessCentreCapsules). Measured in session 20 (silhouettes, largest view, and
@@ -625,9 +632,10 @@ bool WeldBuilder::gatherJunctionShape(const Vec3& centre, double reach) {
     const WeldSkeleton& s = skeleton_;
     shape_.capsules.clear();
     if (!segments_) segments_ = std::make_unique<SegmentGrid>(s);
+    std::size_t candidates = 0;
     return segments_->near(centre, reach, [&](std::uint32_t p) {
         addSegmentInReach(p, centre, reach);
-        return shape_.capsules.size() <= kMaxCapsules;
+        return shape_.capsules.size() <= kMaxCapsules && ++candidates <= kMaxCandidates;
     });
 }
 

@@ -275,8 +275,7 @@ TEST(WeldedMesh, BranchNodesCloserThanTheirRingsMergeIntoOneJunction) {
 // the junction's convex hull webs over the spiral of crotches between them. Shrunk onto the
 // branches, a twentieth of that area is left out there, and it stays a clean closed surface
 // (expectWelded).
-TEST(WeldedMesh, JunctionHullOverACrotchIsShrunkOntoTheBranches) {
-    BranchTree tree;
+void addTwigSpiral(BranchTree& tree) {
     NodeId node = tree.addChild(tree.addRoot(Vec3::Zero(), 1.0), Vec3(0, 3, 0), 1.0);
     for (int i = 0; i < 4; ++i) {
         const double azimuth = degToRad(137.5 * i);
@@ -288,6 +287,11 @@ TEST(WeldedMesh, JunctionHullOverACrotchIsShrunkOntoTheBranches) {
         node = tree.addChild(node, base + Vec3(0, 0.6, 0), 1.0 - 0.01 * i);
     }
     tree.addChild(node, tree.node(node).position + Vec3(0, 5, 0), 0.9);
+}
+
+TEST(WeldedMesh, JunctionHullOverACrotchIsShrunkOntoTheBranches) {
+    BranchTree tree;
+    addTwigSpiral(tree);
     // A few triangles at the foot of the twigs keep part of the web (0.58 local radii out).
     expectWelded(tree, segments(8, 12), "twig_spiral", {.outside = 0.75});
     WeldedMeshParams params = segments(8, 12);
@@ -306,6 +310,28 @@ TEST(WeldedMesh, JunctionHullOverACrotchIsShrunkOntoTheBranches) {
         before, after, hull.triangleCount(), shrunk.triangleCount());
     EXPECT_LT(after, 0.1 * before);  // measured 4.62 → 0.22
     EXPECT_GT(shrunk.triangleCount(), hull.triangleCount());
+}
+
+// The same junction inside a tangle: a second part (after a hidden edge), one limb of 3 000
+// hair-thin steps coiled beside the crotch. Shrinking would run over every segment in reach, so a
+// junction with more than a few hundred segments near it keeps its convex hull: welding stays
+// linear in time in dense trees.
+TEST(WeldedMesh, JunctionInATangleKeepsItsHull) {
+    BranchTree tree;
+    addTwigSpiral(tree);
+    const Vec3 middle(1.5, 4.5, 1.5);
+    auto coil = [&](int i) -> Vec3 {  // a helix of radius 0.3, 24 turns 0.033 apart
+        const double angle = 0.05 * i;
+        return middle + Vec3(0.3 * std::cos(angle), 0.3 * std::sin(angle), 0.8 * i / 3000.0 - 0.4);
+    };
+    NodeId node = tree.addChild(0, coil(0), 0.005);
+    tree.node(node).hidden = true;  // a part of its own
+    for (int i = 1; i <= 3000; ++i) node = tree.addChild(node, coil(i), 0.005);
+    WeldReport report;
+    const Mesh mesh = buildWeldedTreeMesh(tree, segments(8, 12), &report);
+    EXPECT_EQ(report.refinedJunctions, 0u);
+    EXPECT_EQ(report.fallbacks, 0u);
+    EXPECT_GT(mesh.triangleCount(), 0u);
 }
 
 TEST(WeldedMesh, ShortTipNextToAJunctionIsAbsorbed) {
