@@ -19,6 +19,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
@@ -85,7 +86,10 @@ constexpr std::size_t kMaxExcessCentreCapsules = 128;
 constexpr double kLargeExcess = 1e4;
 // Over-relaxation of the sphere tracing along the rays (JunctionRefiner::restingPoint).
 constexpr double kRelaxation = 1.6;
-// Rounds of halving the moves of triangles that turn towards the centre.
+// How far a moved triangle must face away from the centre (JunctionRefiner::facesAway).
+constexpr double kEdgeOn = 1e-5;
+// Rounds of halving the moves of triangles that turn edge-on to the rays or leave a point of a
+// branch axis outside.
 constexpr int kHalvingRounds = 6;
 
 // A hash of the bits of a float position: vertices at one position (texture seam copies)
@@ -210,12 +214,25 @@ public:
                     (onHull_[i] + share_[owner_[i]] * (target_[i] - onHull_[i])).cast<float>();
             }
             bool halved = false;
+            int nf = 0, ns = 0;
             for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
-                if (!facesAway(f)) halved = halveMoves(f, round) || halved;
+                if (!facesAway(f)) {
+                    ++nf;
+                    halved = halveMoves(f, round) || halved;
+                }
             }
             for (const auto& [f, q] : held) {
-                if (!below(f, q)) halved = halveMoves(f, round) || halved;
+                if (!below(f, q)) {
+                    ++ns;
+                    halved = halveMoves(f, round) || halved;
+                }
             }
+            if (debug)
+                std::fprintf(stderr,
+                             "  round %d centre (%.2f %.2f %.2f) facesAway-fails %d sample-fails "
+                             "%d (held %zu of %zu)\n",
+                             round, centre.x(), centre.y(), centre.z(), nf, ns, held.size(),
+                             samples.size());
             if (!halved) break;
         }
     }
@@ -235,6 +252,7 @@ public:
         }
     }
 
+    bool debug = false;
     // Whether every new vertex made its whole move.
     bool allMoved() const {
         return std::all_of(share_.begin(), share_.end(), [](double s) { return s == 1.0; });
@@ -468,12 +486,19 @@ private:
         }
     }
 
-    // Triangle f faces away from the centre, by more than rounding.
+    // Triangle f faces away from the centre, by more than rounding. Moves along the rays keep
+    // the sign of (b − a) × (c − a) · (a − centre) (the triple product of the corners' rays
+    // times their positive lengths), so a triangle fails only by turning nearly edge-on to
+    // them: a steep wall of a surface pulled deep into a crotch. The margin (the sine of the
+    // angle between the triangle and the ray to its corner) was 1e-3 until session 22, which
+    // halved such walls' moves (fig3_2_ring: 1.33 radii off the tubes, 0.48 at 1e-5; ABOP 1.31a
+    // 3.4 → 1.4); computed in double from the float corners the mesh keeps, it is exact to
+    // about 1e-15, and below 1e-5 1.24a's silhouette got a little worse (0.51 → 0.70 radii).
     bool facesAway(std::size_t f) const {
         const std::array<std::uint32_t, 3> v = face(f);
         const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
         const Vec3 normal = (b - a).cross(c - a);
-        return normal.dot(a - centre_) > 1e-3 * normal.norm() * (a - centre_).norm();
+        return normal.dot(a - centre_) > kEdgeOn * normal.norm() * (a - centre_).norm();
     }
     // The triangle whose cone from the centre holds q, or kNone.
     // The faces of one hull face's subdivision cover it, so their cones from the centre
@@ -808,9 +833,30 @@ void WeldBuilder::refineJunction(std::size_t firstIndex) {
         }
     }
     refiner.subdivide();
+    const bool dbg = std::abs(centre.x() - (2.000000)) < 4.000000 &&
+                     std::abs(centre.y() - (43.400000)) < 4.000000;
+    refiner.debug = dbg;
     refiner.shrink(rayCentre, samples);
     ++report_.refinedJunctions;
+    if (dbg) {
+        std::fprintf(stderr,
+                     "DBG centre (%.2f %.2f %.2f) inside %d ray (%.2f %.2f %.2f) reach %.2f caps "
+                     "%zu thin %.3f allMoved %d excess %.2f excessH %.2f\n",
+                     centre.x(), centre.y(), centre.z(), (int)centreInside, rayCentre.x(),
+                     rayCentre.y(), rayCentre.z(), reach, shape_.capsules.size(), shape_.thinnest,
+                     (int)refiner.allMoved(), refiner.excess(), refiner.excess(true));
+        for (const HullRing& h : hullRings_)
+            if (h.hole())
+                std::fprintf(
+                    stderr,
+                    "  arm node (%.2f %.2f %.2f) ring r %.3f centre (%.2f %.2f %.2f) depth %.3f\n",
+                    h.node.x(), h.node.y(), h.node.z(), h.ring.radius, h.ring.center.x(),
+                    h.ring.center.y(), h.ring.center.z(), depthInHull(h.node));
+    }
     if (!refiner.allMoved()) tryMoreCentres(refiner, rayCentre, samples);
+    if (dbg)
+        std::fprintf(stderr, "DBG after centres allMoved %d excess %.2f\n", (int)refiner.allMoved(),
+                     refiner.excess());
     refiner.setNormals();
 }
 

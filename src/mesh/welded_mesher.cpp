@@ -448,8 +448,9 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
         unionClosedSurfaces(mesh, &weld.solidUnion);
         // Shrunk junctions hug neighbouring branches within hundredths of a radius; where the
         // union's cut, rounded to float, leaves such grazes crossing or pinched (ABOP 1.24a,
-        // 2.8c, multi_trunk_0: make union-check, session 20), the convex hulls, which keep
-        // their distance, may unite cleanly. The better union is kept, the shrunk one on a tie.
+        // 2.8c: make union-check, session 22; multi_trunk_0 too in session 20), the convex hulls,
+        // which keep their distance, may unite cleanly. The better union is kept, the shrunk one on
+        // a tie.
         if (params.shrinkJunctions && unionDefects(weld.solidUnion) > 0) {
             WeldedMeshParams hulls = params;
             hulls.shrinkJunctions = false;

@@ -258,25 +258,29 @@ struct Bounds {
 //   hulls at crossings before session 19, 30 % and 12 radii before the solver change; 1.31a
 //   2.0 % and 3.4 since session 21 tried more centres for its worst junction, 84 segments in
 //   reach; 2.6 % and 6.2 before, 4.1 % before session 20, 48 % and 20.5 before the solver
-//   change). Finer subdivision makes them worse (1.27 at 16 or 32 pieces per edge: 15 radii):
+//   change; since session 22, which lets triangles turn nearly edge-on to the rays, 1.27 4.5 %
+//   and 1.31a 1.4 % and 1.4 radii, where a branch axis would poke through the coarse faces).
+//   Finer subdivision makes them worse (1.27 at 16 or 32 pieces per edge: 15 radii):
 //   its worst junction makes all its moves, and its coarse faces span crotches a finer surface
 //   would have to fold into, seen from the centre, so their moves are halved. Shrinking
 //   the junctions at crossings brought 1.24a (1.6 % / 1.0 radius → 0.3 % / 0.72) and conifer
 //   (a bump beside the trunk, 11.8 radii → 0.26) within the tolerances.
-// - the hedges (0.47–0.82 % of the area, within 0.73 radii) and fig3_2_ring (1.3 radii): what
-//   is left of the base junctions where several main branches leave the trunk at once; before
-//   the shrinking they were one convex hull over the whole crotch (hedge_4: 2.2 % of the area,
-//   6.9 radii; hedge_0–3 1.5–2.3 %, 2.4–3.8 radii). hedge_1 was 1.3 % and 3.8 radii until
-//   session 19 moved the rays' centre of a junction whose corners' mean lies outside the
-//   branches onto a branch axis, and 0.72 % and 2.3 until session 20 tried more centres.
+// - the hedges (0.47–0.82 % of the area, within 0.73 radii): what is left of the base
+//   junctions where several main branches leave the trunk at once; before the shrinking they
+//   were one convex hull over the whole crotch (hedge_4: 2.2 % of the area, 6.9 radii;
+//   hedge_0–3 1.5–2.3 %, 2.4–3.8 radii). hedge_1 was 1.3 % and 3.8 radii until session 19 moved the
+//   rays' centre of a junction whose corners' mean lies outside the branches onto a branch axis,
+//   and 0.72 % and 2.3 until session 20 tried more centres. fig3_2_ring (1.3 radii) was one until
+//   session 22: the surface pulled into the crotch of a junction of three branches 2° and 30° apart
+//   turned nearly edge-on to its rays, and the check that each triangle faces away from the centre
+//   asked for more than that.
 // Before the solver change (the rings of slow pairs leapfrogged out along their limbs) every
 // dense ABOP plant and every colonization tree was an exception here, e.g. 2.8a with 78 % of
 // the tube silhouette's area added up to 30 radii from it, 2.6d 90 % and 41 radii.
 const std::vector<std::pair<std::string, Bounds>>& exceptions() {
     static const std::vector<std::pair<std::string, Bounds>> kExceptions = {
-        {"abop_1_27", {.gainedDistance = 6.2, .gainedArea = 0.055}},
-        {"abop_1_31a", {.gainedDistance = 3.9, .gainedArea = 0.023}},
-        {"fig3_2_ring_0", {.gainedDistance = 1.6}},
+        {"abop_1_27", {.gainedDistance = 6.2, .gainedArea = 0.053}},
+        {"abop_1_31a", {.gainedDistance = 1.7, .gainedArea = 0.017}},
         {"hedge_0", {.lostArea = 0.0021, .gainedArea = 0.0095}},
         {"hedge_1", {.lostArea = 0.0014}},
         {"hedge_2", {.lostArea = 0.0015, .gainedArea = 0.006}},
