@@ -19,7 +19,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
@@ -214,25 +213,12 @@ public:
                     (onHull_[i] + share_[owner_[i]] * (target_[i] - onHull_[i])).cast<float>();
             }
             bool halved = false;
-            int nf = 0, ns = 0;
             for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
-                if (!facesAway(f)) {
-                    ++nf;
-                    halved = halveMoves(f, round) || halved;
-                }
+                if (!facesAway(f)) halved = halveMoves(f, round) || halved;
             }
             for (const auto& [f, q] : held) {
-                if (!below(f, q)) {
-                    ++ns;
-                    halved = halveMoves(f, round) || halved;
-                }
+                if (!below(f, q)) halved = halveMoves(f, round) || halved;
             }
-            if (debug)
-                std::fprintf(stderr,
-                             "  round %d centre (%.2f %.2f %.2f) facesAway-fails %d sample-fails "
-                             "%d (held %zu of %zu)\n",
-                             round, centre.x(), centre.y(), centre.z(), nf, ns, held.size(),
-                             samples.size());
             if (!halved) break;
         }
     }
@@ -252,7 +238,6 @@ public:
         }
     }
 
-    bool debug = false;
     // Whether every new vertex made its whole move.
     bool allMoved() const {
         return std::all_of(share_.begin(), share_.end(), [](double s) { return s == 1.0; });
@@ -833,30 +818,9 @@ void WeldBuilder::refineJunction(std::size_t firstIndex) {
         }
     }
     refiner.subdivide();
-    const bool dbg = std::abs(centre.x() - (2.000000)) < 4.000000 &&
-                     std::abs(centre.y() - (43.400000)) < 4.000000;
-    refiner.debug = dbg;
     refiner.shrink(rayCentre, samples);
     ++report_.refinedJunctions;
-    if (dbg) {
-        std::fprintf(stderr,
-                     "DBG centre (%.2f %.2f %.2f) inside %d ray (%.2f %.2f %.2f) reach %.2f caps "
-                     "%zu thin %.3f allMoved %d excess %.2f excessH %.2f\n",
-                     centre.x(), centre.y(), centre.z(), (int)centreInside, rayCentre.x(),
-                     rayCentre.y(), rayCentre.z(), reach, shape_.capsules.size(), shape_.thinnest,
-                     (int)refiner.allMoved(), refiner.excess(), refiner.excess(true));
-        for (const HullRing& h : hullRings_)
-            if (h.hole())
-                std::fprintf(
-                    stderr,
-                    "  arm node (%.2f %.2f %.2f) ring r %.3f centre (%.2f %.2f %.2f) depth %.3f\n",
-                    h.node.x(), h.node.y(), h.node.z(), h.ring.radius, h.ring.center.x(),
-                    h.ring.center.y(), h.ring.center.z(), depthInHull(h.node));
-    }
     if (!refiner.allMoved()) tryMoreCentres(refiner, rayCentre, samples);
-    if (dbg)
-        std::fprintf(stderr, "DBG after centres allMoved %d excess %.2f\n", (int)refiner.allMoved(),
-                     refiner.excess());
     refiner.setNormals();
 }
 
