@@ -447,10 +447,9 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
     if (params.solidUnion) {
         unionClosedSurfaces(mesh, &weld.solidUnion);
         // Shrunk junctions hug neighbouring branches within hundredths of a radius; where the
-        // union's cut, rounded to float, leaves such grazes crossing or pinched (ABOP 1.24a,
-        // 2.8c: make union-check, session 22; multi_trunk_0 too in session 20), the convex hulls,
-        // which keep their distance, may unite cleanly. The better union is kept, the shrunk one on
-        // a tie.
+        // union's cut, rounded to float, leaves such grazes crossing or pinched (make
+        // union-check, session 22: ABOP 1.24a and 2.8c), the convex hulls, which keep their
+        // distance, may unite cleanly. The better union is kept, the shrunk one on a tie.
         if (params.shrinkJunctions && unionDefects(weld.solidUnion) > 0) {
             WeldedMeshParams hulls = params;
             hulls.shrinkJunctions = false;
