@@ -225,10 +225,12 @@ public:
             }
             for (const auto& [f, q] : held) {
                 if (!below(f, q)) {
-                    halved =
-                        shortenMoves(f, round,
-                                     [&](const std::array<Vec3, 3>& p) { return below(p, q); }) ||
-                        halved;
+                    // q by value: clang before 16 cannot capture a structured binding.
+                    halved = shortenMoves(f, round,
+                                          [sample = q](const std::array<Vec3, 3>& p) {
+                                              return below(p, sample);
+                                          }) ||
+                             halved;
                 }
             }
             if (!halved) break;
