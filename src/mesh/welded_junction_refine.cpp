@@ -91,7 +91,7 @@ constexpr double kEdgeOn = 1e-5;
 // a branch axis outside. Each shortens a failing triangle's moves by the largest factor (to
 // 1/64) with which it passes; until session 22 they were halved, which left more of the webs
 // (ABOP 1.31a 1.40 → 0.55 radii off the tubes, 1.41 → 1.22 % of the area; 1.27 4.5 → 4.0 %).
-constexpr int kHalvingRounds = 6;
+constexpr int kShorteningRounds = 6;
 
 // A hash of the bits of a float position: vertices at one position (texture seam copies)
 // hash alike.
@@ -179,7 +179,7 @@ public:
 
     // Moves every new vertex to where its ray towards the centre enters the branches' surface,
     // then shortens the moves around triangles that turn edge-on to the rays or leave a
-    // `sample` (a point of a branch's axis) outside, until none does; after kHalvingRounds such
+    // `sample` (a point of a branch's axis) outside, until none does; after kShorteningRounds such
     // vertices go back onto the hull. Copies of a vertex on a texture seam share one move.
     void shrink(const Vec3& centre, const std::vector<Vec3>& samples) {
         centre_ = centre;
@@ -529,7 +529,7 @@ private:
     }
     // Shortens the moves of triangle f's new vertices by the one factor (a bisection to 1/64)
     // that lets `passes` hold of its corners as floats, the moves as they stand this round
-    // (zeroes them after kHalvingRounds); returns whether any was still moved.
+    // (zeroes them after kShorteningRounds); returns whether any was still moved.
     template <class Passes>
     bool shortenMoves(std::size_t f, int round, Passes passes) {
         const std::array<std::uint32_t, 3> v = face(f);
@@ -549,7 +549,7 @@ private:
             return p;
         };
         double keep = 0.0;
-        if (round < kHalvingRounds) {
+        if (round < kShorteningRounds) {
             if (passes(corners(1.0))) return false;  // shortened enough by another triangle
             double lo = 0.0, hi = 1.0;
             for (int k = 0; k < 6; ++k) {
