@@ -43,9 +43,10 @@ test: deps format-check check-tests studio-e2e validate three-load blender-impor
 	@echo "make test: all checks passed"
 	@node scripts/gtest-summary.mjs $(CHECK)/gtest-*.json
 
-# Twice as many shards as cores, taken from a queue, keep both cores busy to the end
-# (scripts/test-shards.sh); more would rebuild per-process caches (the default bone library,
-# 13 s under ASan) once per shard for little gain.
+# The heavy tests (tests/heavy-tests.txt) one per process, longest first, then the rest in twice
+# as many shards as cores, all taken from one queue, keep both cores busy to the end
+# (scripts/test-shards.sh); more shards would rebuild per-process caches (the default bone
+# library, 13 s under ASan) once per shard for little gain.
 TEST_SHARDS ?= $(shell echo $$(( $(JOBS) * 2 )))
 CHECK_FLAGS := -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRAMUS_SANITIZE=ON \
                -DRAMUS_ENABLE_ASSERTS=ON -DRAMUS_BUILD_BENCH=OFF -DRAMUS_UNITY_BUILD=ON
@@ -53,9 +54,9 @@ check-tests: deps
 	@cmake -S . -B $(CHECK) $(CMAKE_GEN) $(CHECK_FLAGS) >/dev/null
 	@cmake --build $(CHECK) -j $(JOBS) --target ramus ramus_tests
 	@rm -rf $(CHECK)/test-output $(CHECK)/gtest-*.json $(CHECK)/gtest-*.log && mkdir -p $(CHECK)/test-output
-	@echo "ramus_tests in $(TEST_SHARDS) shards, $(JOBS) at a time (GoogleTest sharding)"
+	@echo "ramus_tests: the heavy tests one by one, then $(TEST_SHARDS) shards, $(JOBS) at a time"
 	@cd $(CHECK) && RAMUS_TEST_OUTPUT=$(CURDIR)/$(CHECK)/test-output RAMUS_BIN=$(CURDIR)/$(CHECK)/ramus \
-	  $(CURDIR)/scripts/test-shards.sh ./ramus_tests . $(JOBS) $(TEST_SHARDS)
+	  $(CURDIR)/scripts/test-shards.sh ./ramus_tests . $(JOBS) $(TEST_SHARDS) $(CURDIR)/tests/heavy-tests.txt
 
 studio-e2e: check-tests
 	@node tests/studio/e2e.mjs $(CHECK)/ramus $(CHECK)/test-output
