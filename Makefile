@@ -8,7 +8,7 @@ CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
 .PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load blender-import format \
-        format-check bench bench-peers fuzz fuzz-smoke batch-check union-check check-floats clean
+        format-check bench bench-peers fuzz fuzz-build fuzz-smoke batch-check union-check check-floats clean
 
 all: build
 
