@@ -63,6 +63,11 @@ std::vector<double> computeEdgeRadii(const BranchTree& tree, const TubeMeshParam
 /// only hidden edges → empty mesh (no primitives, no materials). Deterministic.
 Mesh buildTubeMesh(const BranchTree& tree, const TubeMeshParams& params = {});
 
+/// The number of triangles buildTubeMesh(tree, params) has, found without building the mesh
+/// (the same chains, merged and reduced rings and caps; no vertices): what planning levels of
+/// detail tries many times.
+std::size_t countTubeTriangles(const BranchTree& tree, const TubeMeshParams& params = {});
+
 /// Triangulates planar-ish polygons into a mesh "leaves" with one primitive "leaves": each
 /// polygon is ear-clipped in its Newell plane (concave ones too) into one sheet facing its
 /// Newell normal, and `material` is returned with doubleSided = true so the sheet shows from

@@ -38,21 +38,23 @@ public:
     }
 
     Mesh bark(const Detail& d) const {
-        TubeMeshParams tube = params_.tube;
-        tube.minSegments = d.minSegments;
-        tube.maxSegments = d.maxSegments;
         Mesh mesh;
         mesh.name = "tree";
-        for (std::size_t t = 0; t < trees_.size(); ++t) {
-            if (d.prune == 0) {
-                appendMesh(mesh, branches(*trees_[t].tree, tube, d));
-            } else {
-                TubeMeshParams widths = tube;
-                widths.radiusMode = RadiusMode::Widths;
-                appendMesh(mesh, branches(prunedTree(t, d.prune), widths, d));
-            }
-        }
+        forEachBark(d, [&](const BranchTree& tree, const TubeMeshParams& tube) {
+            appendMesh(mesh, branches(tree, tube, d));
+        });
         return mesh;
+    }
+
+    // The bark's triangles at detail d: tubes are counted without being built (the LOD
+    // planning tries up to a few dozen details per level), welded bark is meshed.
+    std::size_t barkTriangles(const Detail& d) const {
+        if (params_.weldJunctions) return bark(d).triangleCount();
+        std::size_t count = 0;
+        forEachBark(d, [&](const BranchTree& tree, const TubeMeshParams& tube) {
+            count += countTubeTriangles(tree, tube);
+        });
+        return count;
     }
 
     // One tree's bark: tubes, or one welded surface (united when d.solidUnion).
@@ -115,6 +117,24 @@ public:
     }
 
 private:
+    // Calls f(tree, its tube parameters) for the bark of every tree at detail d: pruned trees
+    // keep the whole tree's radii (as widths), so hiding changes nothing else.
+    template <class F>
+    void forEachBark(const Detail& d, F f) const {
+        TubeMeshParams tube = params_.tube;
+        tube.minSegments = d.minSegments;
+        tube.maxSegments = d.maxSegments;
+        for (std::size_t t = 0; t < trees_.size(); ++t) {
+            if (d.prune == 0) {
+                f(*trees_[t].tree, tube);
+            } else {
+                TubeMeshParams widths = tube;
+                widths.radiusMode = RadiusMode::Widths;
+                f(prunedTree(t, d.prune), widths);
+            }
+        }
+    }
+
     // Edges thinnest first (ties: the newest node first, so outer twigs go before inner ones)
     // over all trees; made on first use.
     void buildPruneOrder() {
@@ -190,7 +210,7 @@ void planBark(TreeMesher& mesher, double target, Detail& d) {
     for (; j < steps.size(); ++j) {
         Detail trial = d;
         std::tie(trial.minSegments, trial.maxSegments) = steps[j];
-        const double count = static_cast<double>(triangles(mesher.bark(trial)));
+        const double count = static_cast<double>(mesher.barkTriangles(trial));
         if (count <= target) {
             if (j == 0 || count >= 0.97 * target) {
                 std::tie(d.minSegments, d.maxSegments) = steps[j];
@@ -205,7 +225,7 @@ void planBark(TreeMesher& mesher, double target, Detail& d) {
     auto count = [&](std::size_t prune) {
         Detail trial = d;
         trial.prune = prune;
-        return static_cast<double>(triangles(mesher.bark(trial)));
+        return static_cast<double>(mesher.barkTriangles(trial));
     };
     if (count(hi) > target) {
         d.prune = hi;
@@ -253,7 +273,7 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
     Detail full;
     full.minSegments = std::clamp(params.tube.minSegments, 3, 4096);
     full.maxSegments = std::clamp(params.tube.maxSegments, full.minSegments, 4096);
-    const double bark0 = static_cast<double>(triangles(mesher.bark(full)));
+    const double bark0 = static_cast<double>(mesher.barkTriangles(full));
     const double leaves0 = static_cast<double>(triangles(mesher.leaves(full)));
     Detail cards = full;
     cards.cards = true;

@@ -55,6 +55,7 @@ class TubeBuilder {
 public:
     TubeBuilder(const BranchTree& tree, const TubeMeshParams& params);
     Mesh build();
+    std::size_t countTriangles();
 
 private:
     struct Ring {
@@ -360,6 +361,23 @@ void TubeBuilder::meshChain(NodeId first) {
     }
 }
 
+// What meshChain and emitSides/emitCap write, per chain: 2n triangles per tube piece, n per
+// cap.
+std::size_t TubeBuilder::countTriangles() {
+    std::size_t triangles = 0;
+    for (std::size_t i = 1; i < tree_.size(); ++i) {
+        const auto first = static_cast<NodeId>(i);
+        if (!drawn(i) || !startsChain(first)) continue;
+        gatherRings(first);
+        if (rings_.size() < 2) continue;
+        const auto n = static_cast<std::size_t>(segmentsFor(rings_[0].radius));
+        triangles += 2 * n * (rings_.size() - 1);
+        if (needsBaseCap(first)) triangles += n;
+        if (params_.capTips) triangles += n;
+    }
+    return triangles;
+}
+
 Mesh TubeBuilder::build() {
     mesh_.name = "tree";
     if (tree_.size() < 2) return std::move(mesh_);
@@ -394,6 +412,13 @@ Mesh buildTubeMesh(const BranchTree& tree, const TubeMeshParams& params) {
         return empty;
     }
     return TubeBuilder(tree, params).build();
+}
+
+std::size_t countTubeTriangles(const BranchTree& tree, const TubeMeshParams& params) {
+    if (tree.size() < 2) return 0;
+    TubeMeshParams counting = params;
+    counting.windAttributes = false;  // no vertices: no wind data to prepare
+    return TubeBuilder(tree, counting).countTriangles();
 }
 
 }  // namespace ramus

@@ -16,6 +16,7 @@
 #include "ramus/rng.hpp"
 #include "ramus/scene.hpp"
 #include "tube_test_util.hpp"
+#include "welded_checks.hpp"
 
 namespace ramus {
 namespace {
@@ -341,6 +342,42 @@ TEST(TubeMesh, IsDeterministic) {
     EXPECT_EQ(std::memcmp(a.tangents.data(), b.tangents.data(), a.tangents.size() * 16), 0);
     EXPECT_EQ(std::memcmp(a.uvs.data(), b.uvs.data(), a.uvs.size() * 8), 0);
     writeForValidator(a, "random_2000_reduced");
+}
+
+// countTubeTriangles is what LOD planning asks instead of meshing: it must agree with the mesh
+// exactly, whatever merges, reduces, caps or hides rings. Shipped L-systems (dense ones, zero-
+// length edges, hidden edges of `f`) under several settings, and with every third edge hidden.
+TEST(TubeMesh, CountedTrianglesAreTheMeshesTriangles) {
+    std::vector<TubeMeshParams> settings(4);
+    settings[1].minSegments = 3;
+    settings[1].maxSegments = 24;
+    settings[1].capTips = true;
+    settings[2].curveReduction = 0.98;
+    settings[2].capTips = true;
+    settings[3].minSegments = settings[3].maxSegments = 5;
+    settings[3].radiusMode = RadiusMode::Widths;
+    settings[3].windAttributes = true;
+    std::size_t compared = 0;
+    for (const char* name : {"tree_3d", "abop_1_24c", "abop_2_6d", "koch_island", "monopodial"}) {
+        BranchTree tree =
+            test::growLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/" + std::string(name) + ".lsys");
+        for (int pass = 0; pass < 2; ++pass) {
+            if (pass == 1) {
+                for (std::size_t i = 1; i < tree.size(); i += 3) {
+                    tree.node(static_cast<NodeId>(i)).hidden = true;
+                }
+            }
+            for (std::size_t k = 0; k < settings.size(); ++k) {
+                SCOPED_TRACE(std::string(name) + " pass " + std::to_string(pass) + " settings " +
+                             std::to_string(k));
+                const std::size_t meshed = buildTubeMesh(tree, settings[k]).triangleCount();
+                EXPECT_EQ(countTubeTriangles(tree, settings[k]), meshed);
+                compared += meshed > 0;
+            }
+        }
+    }
+    EXPECT_EQ(compared, 5u * 2u * 4u);
+    EXPECT_EQ(countTubeTriangles(BranchTree{}), 0u);
 }
 
 }  // namespace
