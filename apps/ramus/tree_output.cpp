@@ -124,6 +124,7 @@ void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
         stats["unions_applied"] = report.unionsApplied;
         stats["unions_failed"] = report.unionsFailed;
         stats["unions_of_convex_junctions"] = report.unionsOfHulls;
+        stats["union_tubed_junctions"] = report.tubedForUnion;
         stats["union_crossings_left"] = report.crossingsLeft;
         stats["union_pinched_edges"] = report.pinchedEdges;
         stats["union_crossing_moves"] = report.crossingMoves;

@@ -59,6 +59,8 @@ struct TreeMeshReport {
     std::size_t unionsFailed = 0;     ///< tree meshes left welded (overlapping), see firstFailure
     /// Of the united meshes, those made of convex junctions (WeldReport::convexForUnion).
     std::size_t unionsOfHulls = 0;
+    /// Over the united meshes: junctions meshed as tubes for the union (WeldReport::tubedForUnion).
+    std::size_t tubedForUnion = 0;
     std::string firstFailure;  ///< SolidUnionReport::failure of the first failed one
     /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges and
     /// ::crossingMoves.

@@ -32,7 +32,9 @@ struct WeldedMeshParams {
     /// filleted surface; a shrunk junction does not intersect itself, and two at a crossing
     /// (a limb too short for both rings) overlap each other as their hulls did
     /// (docs/welded.md, "Shrunk junctions"). With solidUnion the shrunk junctions are united
-    /// first; where that union is not clean (see WeldReport::convexForUnion) the hulls are.
+    /// first (those whose faces stay more than a local radius outside the branches as tubes,
+    /// WeldReport::tubedForUnion); where that union is not clean (see
+    /// WeldReport::convexForUnion) the hulls are.
     bool shrinkJunctions = true;
 };
 
@@ -55,6 +57,10 @@ struct WeldReport {
     /// along their parent, closed over by a ball of the thickest branch's radius.
     std::size_t nodeBalls = 0;
     std::size_t refinedJunctions = 0;  ///< junctions shrunk onto their branches
+    /// With solidUnion: shrunk junctions whose faces stayed more than a local radius outside
+    /// the branches, meshed as capped tubes (as fallbacks) for the union to join instead
+    /// (counted in refinedJunctions too).
+    std::size_t tubedForUnion = 0;
     std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
     /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).
     std::size_t junctionTriangles = 0;

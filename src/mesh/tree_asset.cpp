@@ -76,6 +76,7 @@ public:
             if (weld.solidUnion.applied) {
                 ++report_->unionsApplied;
                 if (weld.convexForUnion) ++report_->unionsOfHulls;
+                report_->tubedForUnion += weld.tubedForUnion;
                 report_->crossingsLeft += weld.solidUnion.remainingIntersections;
                 report_->pinchedEdges += weld.solidUnion.pinchedEdges;
                 report_->crossingMoves += weld.solidUnion.crossingMoves;

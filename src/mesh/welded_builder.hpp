@@ -108,7 +108,7 @@ private:
     std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
 
     // welded_junction_refine.cpp
-    void refineJunction(std::size_t firstIndex);
+    bool refineJunction(std::size_t firstIndex, bool judgeWebs);
     void tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
                         const std::vector<Vec3>& samples);
     void gatherOwnShape(double reach, const Vec3& centre);

@@ -332,8 +332,19 @@ void WeldBuilder::meshJunction(NodeId cluster) {
         mesh_.indices.resize(before);
         closed = hullJunction();
     }
+    const std::size_t vertices = mesh_.positions.size();
     if (closed) {
-        if (params_.shrinkJunctions) refineJunction(before);
+        // Webs the shrinking left are meshed as tubes where the union will join them
+        // (kUnionWebLimit, welded_junction_refine.cpp); the shrunk vertices go again.
+        if (!params_.shrinkJunctions || !refineJunction(before, params_.solidUnion)) return;
+        ++report_.tubedForUnion;
+        mesh_.positions.resize(vertices);
+        mesh_.normals.resize(vertices);
+        mesh_.tangents.resize(vertices);
+        mesh_.uvs.resize(vertices);
+        if (params_.tube.windAttributes) windOut_.resize(vertices);
+        mesh_.indices.resize(before);
+        fallbackJunction();
         return;
     }
     mesh_.indices.resize(before);

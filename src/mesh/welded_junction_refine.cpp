@@ -92,6 +92,17 @@ constexpr double kEdgeOn = 1e-5;
 // 1/64) with which it passes; until session 22 they were halved, which left more of the webs
 // (ABOP 1.31a 1.40 → 0.55 radii off the tubes, 1.41 → 1.22 % of the area; 1.27 4.5 → 4.0 %).
 constexpr int kShorteningRounds = 6;
+// With the solid union, a shrunk junction whose faces still lie more than this many local radii
+// outside the branches (a face's centre or an edge's midpoint: webs the shrinking could not
+// pull in, over clusters of tips not star-shaped from any centre tried) is meshed as capped
+// tubes instead, as a fallback junction, and the union joins them: 1 radius is the tolerance
+// of the silhouette gained against the tube mesh (tests/mesh/welded_silhouette_test.cpp).
+// Measured in session 24 (dev build, every shipped example united): 0–72 junctions per
+// example (ABOP 1.27 12, 1.31a 5, hedges 2–3), and every example within the silhouette
+// tolerance united (1.27 4.0 % of the area and 5.35 radii gained → 0, 1.31a 1.2 % → 0, hedges
+// 0.47–0.82 % → 0.22–0.33 %), every union clean at its first attempt (1.24a's shrunk
+// junctions kept 12 crossing pairs before and were united as hulls).
+constexpr double kUnionWebLimit = 1.0;
 
 // A hash of the bits of a float position: vertices at one position (texture seam copies)
 // hash alike.
@@ -250,6 +261,20 @@ public:
             }
             mesh_.normals[firstNew_ + i] = gradient.normalized().cast<float>();
         }
+    }
+
+    // Whether a face of the junction still lies more than `limit` local radii outside the
+    // branches (its centre or an edge's midpoint).
+    bool websLeft(double limit) const {
+        for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
+            const std::array<std::uint32_t, 3> v = face(f);
+            const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
+            for (const Vec3& probe : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)),
+                                      Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a))}) {
+                if (shape_.farOutside(probe, limit)) return true;
+            }
+        }
+        return false;
     }
 
     // Whether every new vertex made its whole move.
@@ -810,12 +835,14 @@ void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
     if (best != tried.back()) refiner.shrink(best, samples);
 }
 
-// Junctions at a crossing (a limb between two of them too short for both rings, which pass
-// each other) are shrunk too: their hulls overlap and cut through each other whether shrunk
-// or not, along curves of about the same length (conifer: 58.3 units as hulls, 59.2 shrunk), and
-// as hulls they bulge far out (conifer: a bump of 11.8 twig radii beside the trunk, 0.26 shrunk).
-void WeldBuilder::refineJunction(std::size_t firstIndex) {
-    if (mesh_.indices.size() == firstIndex) return;
+// Returns whether, with `judgeWebs`, faces of the shrunk junction still lie more than
+// kUnionWebLimit local radii outside the branches. Junctions at a crossing (a limb between two
+// of them too short for both rings, which pass each other) are shrunk too: their hulls overlap and
+// cut through each other whether shrunk or not, along curves of about the same length
+// (conifer: 58.3 units as hulls, 59.2 shrunk), and as hulls they bulge far out (conifer: a bump
+// of 11.8 twig radii beside the trunk, 0.26 shrunk).
+bool WeldBuilder::refineJunction(std::size_t firstIndex, bool judgeWebs) {
+    if (mesh_.indices.size() == firstIndex) return false;
     // Centre: the mean of the hull's corners (strictly inside a convex hull).
     Vec3 centre = Vec3::Zero();
     for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
@@ -829,12 +856,12 @@ void WeldBuilder::refineJunction(std::size_t firstIndex) {
     // Webs are judged against the junction's own branches alone (few capsules: most junctions
     // have none, and this is all they cost); the shrinking then takes every branch in reach.
     gatherOwnShape(reach, centre);
-    if (shape_.capsules.empty() || !(shape_.thinnest > 0.0)) return;
+    if (shape_.capsules.empty() || !(shape_.thinnest > 0.0)) return false;
     JunctionRefiner refiner(mesh_, params_.tube.windAttributes ? &windOut_ : nullptr, shape_,
                             firstIndex);
     if (!refiner.markWebs([&](std::uint32_t a, std::uint32_t b) { return onArmRingEdge(a, b); }) ||
         !gatherJunctionShape(centre, reach)) {
-        return;
+        return false;
     }
     // Points along the branches' axes inside the hull: they must stay inside.
     std::vector<Vec3> samples;
@@ -866,6 +893,7 @@ void WeldBuilder::refineJunction(std::size_t firstIndex) {
     ++report_.refinedJunctions;
     if (!refiner.allMoved()) tryMoreCentres(refiner, rayCentre, samples);
     refiner.setNormals();
+    return judgeWebs && refiner.websLeft(kUnionWebLimit);
 }
 
 }  // namespace ramus::detail
