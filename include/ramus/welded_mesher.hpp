@@ -56,6 +56,9 @@ struct WeldReport {
     /// Branch nodes the hull of their rings left (nearly) bare, as where branches fold back
     /// along their parent, closed over by a ball of the thickest branch's radius.
     std::size_t nodeBalls = 0;
+    /// Branch nodes where the branch bends (by more than 10°) and the tube mesher's ring there,
+    /// facing the bend's bisector, reached outside the hull: its outer points are hull points.
+    std::size_t bendRings = 0;
     std::size_t refinedJunctions = 0;  ///< junctions shrunk onto their branches
     /// With solidUnion: shrunk junctions whose faces stayed more than a local radius outside
     /// the branches, meshed as capped tubes (as fallbacks) for the union to join instead

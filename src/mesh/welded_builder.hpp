@@ -104,6 +104,7 @@ private:
     bool hullJunction();
     double depthInHull(const Vec3& point) const;
     bool addNodeBalls();
+    bool addBendRings();
     void fallbackJunction();
     std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
 
@@ -125,6 +126,9 @@ private:
     std::vector<double> keyV_;                     // per node: texture v at key nodes
     std::vector<RingRecord> startRing_, endRing_;  // per limb: its rings at junctions
     std::vector<std::uint32_t> discFirst_;         // per limb + 1: absorbed rings in discs_
+    // Per limb: 1 = the tube mesher's chain runs on into it from the limb ending at its start
+    // (its first edge's child keeps its parent's branch depth: tube_mesher.cpp, linkChains).
+    std::vector<std::uint8_t> continuesChain_;
     std::vector<RingRecord> discs_;
     // Per limb side (2 l: at its start, 2 l + 1: at its end) + 1: rings of its inner points
     // between the junction's node and the limb's ring there (hull points) in before_.
@@ -150,11 +154,14 @@ private:
         bool start;  // the ring starts its limb (else it ends it)
         Vec3 node;   // the branch node where the ring's limb meets the junction
         std::int32_t limb;
+        // Into pointsKept_ (ring.n flags: which of its points are hull points), or -1: all.
+        std::int32_t kept = -1;
     };
     RingRecord armBackToNode(const HullRing& h);  // welded_junction_mesh.cpp
     double ballRoom(const Vec3& node, std::size_t arms, double& radius) const;
     void emitBall(const HullRing& h, double radius);
     std::vector<HullRing> hullRings_;
+    std::vector<std::uint8_t> pointsKept_;  // see HullRing::kept
     std::vector<Vec3> points_;
     std::vector<std::int32_t> pointRing_;   // per hull point: index into hullRings_
     std::vector<std::int32_t> pointIndex_;  // per hull point: vertex in its ring, -1 = apex

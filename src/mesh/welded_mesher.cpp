@@ -67,6 +67,12 @@ WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
     skeleton_ = buildWeldSkeleton(tree, params.tube);
     junctions_ = solveWeldJunctions(skeleton_, margin_);
     if (params.tube.windAttributes) wind_ = TreeWind(tree, params.tube.windSeed);
+    continuesChain_.assign(skeleton_.limbs.size(), 0);
+    for (std::size_t l = 0; l < skeleton_.limbs.size(); ++l) {
+        const BranchNode& child = tree.node(skeleton_.pointNode[skeleton_.limbs[l].first + 1]);
+        continuesChain_[l] = child.parent != kNoNode && !child.hidden &&
+                             child.branchDepth == tree.node(child.parent).branchDepth;
+    }
 }
 
 WindSample WeldBuilder::windAt(const RingPlace& place) const {
@@ -396,9 +402,10 @@ Mesh WeldBuilder::build(WeldReport* report) {
         RAMUS_ASSERT(windOut_.vertexCount() == mesh_.positions.size());
         windOut_.moveInto(mesh_);
     }
-    // Rings of absorbed limbs, of points before arm rings and of balls inside a hull are used
-    // by no triangle (nor by any where their junction fell back).
-    if (junctions_.absorbedLimbs + junctions_.merges + report_.nodeBalls > 0 || !before_.empty()) {
+    // Rings of absorbed limbs, of points before arm rings, of balls and bends inside a hull are
+    // used by no triangle (nor by any where their junction fell back).
+    if (junctions_.absorbedLimbs + junctions_.merges + report_.nodeBalls + report_.bendRings > 0 ||
+        !before_.empty()) {
         removeUnusedVertices(mesh_);
     }
     if (!mesh_.indices.empty()) {

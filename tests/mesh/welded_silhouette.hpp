@@ -54,7 +54,7 @@ struct SilhouetteBounds {
     // The welded rings are the tube rings; only where a stretch has another segment count than
     // its chain does the polygon change, by at most r (1 − cos 45°) ≈ 0.29 r at 4 segments.
     double lostDistance = 0.5;
-    double lostArea = 0.001;  // ≤ 0.09 % measured but on the hedges; a whole limb is far more
+    double lostArea = 0.001;  // ≤ 0.04 % measured (session 24); a whole limb is far more
     // Convex junctions bridge the crotches: up to 0.5 × the local radius off the capsules in
     // the hand-made cases (welded_mesher_test.cpp), plus the 0.29 r the tube polygons lie
     // inside them.
