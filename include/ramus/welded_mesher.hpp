@@ -60,9 +60,10 @@ struct WeldReport {
     /// facing the bend's bisector, reached outside the hull: its outer points are hull points.
     std::size_t bendRings = 0;
     std::size_t refinedJunctions = 0;  ///< junctions shrunk onto their branches
-    /// With solidUnion: shrunk junctions whose faces stayed more than a local radius outside
-    /// the branches, meshed as capped tubes (as fallbacks) for the union to join instead
-    /// (counted in refinedJunctions too).
+    /// With solidUnion: junctions whose faces (shrunk, or the convex hull's where the hulls are
+    /// united) stayed more than a local radius outside the branches, meshed as capped tubes
+    /// (as fallbacks) for the union to join instead (shrunk ones counted in refinedJunctions
+    /// too).
     std::size_t tubedForUnion = 0;
     std::size_t components = 0;  ///< closed surfaces (1 per tree unless hidden edges split it)
     /// Triangles of the junctions: the last ones of the index buffer (tubes and caps first).

@@ -101,7 +101,9 @@ private:
     // welded_junction_mesh.cpp
     void meshJunction(NodeId cluster);
     void gatherJunction(NodeId cluster);
-    bool hullJunction();
+    bool buildHull(std::size_t firstRing = 0);
+    bool holesAreRings();
+    void emitHull();
     double depthInHull(const Vec3& point) const;
     bool addNodeBalls();
     bool addBendRings();
@@ -112,7 +114,8 @@ private:
     bool refineJunction(std::size_t firstIndex, bool judgeWebs);
     void tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
                         const std::vector<Vec3>& samples);
-    void gatherOwnShape(double reach, const Vec3& centre);
+    bool gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& reach);
+    bool hullWebbed(std::size_t firstIndex);
     bool gatherJunctionShape(const Vec3& centre, double reach);
     void addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach);
     bool onArmRingEdge(std::uint32_t a, std::uint32_t b) const;
@@ -167,6 +170,7 @@ private:
     std::vector<std::int32_t> pointIndex_;  // per hull point: vertex in its ring, -1 = apex
     std::vector<int> coneFaces_;
     ConvexHull hull_;
+    double hullExtent_ = 0.0;  // of the points of the last hull built (for its perturbation)
     // Per face of hull_, for depthInHull: its outward unit normal and the normal's dot with
     // its points (relative to hullRings_.front()'s centre, as points_).
     struct Plane {

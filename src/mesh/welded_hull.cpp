@@ -137,10 +137,25 @@ bool ConvexHull::build(std::span<const Vec3> points, double epsilon) {
         if (std::find(simplex_.begin(), simplex_.end(), p) != simplex_.end()) continue;
         if (!addPoint(points, p, epsilon)) return false;
     }
+    collectFaces();
+    return true;
+}
+
+bool ConvexHull::extend(std::span<const Vec3> points, std::uint32_t from, double epsilon) {
+    result_.clear();
+    startFace_.resize(points.size(), -1);
+    endFace_.resize(points.size(), -1);
+    for (std::uint32_t p = from; p < points.size(); ++p) {
+        if (!addPoint(points, p, epsilon)) return false;
+    }
+    collectFaces();
+    return true;
+}
+
+void ConvexHull::collectFaces() {
     for (const Face& face : faces_) {
         if (face.alive) result_.push_back(face.v);
     }
-    return true;
 }
 
 }  // namespace ramus::detail

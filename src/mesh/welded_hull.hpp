@@ -24,6 +24,9 @@ public:
     /// rounding broke the horizon (a point saw a non-disc set of faces): callers then fall
     /// back. Faces are counter-clockwise seen from outside.
     bool build(std::span<const Vec3> points, double epsilon);
+    /// Adds points[from …] to the hull of the last successful build (or extend) of
+    /// points[0, from): the same result as building the hull of all of them in that order.
+    bool extend(std::span<const Vec3> points, std::uint32_t from, double epsilon);
 
     /// Faces of the last successful build (indices into its points).
     const std::vector<std::array<std::uint32_t, 3>>& faces() const { return result_; }
@@ -42,6 +45,7 @@ private:
     std::int32_t addFace(std::span<const Vec3> points, std::uint32_t a, std::uint32_t b,
                          std::uint32_t c);
     bool addPoint(std::span<const Vec3> points, std::uint32_t p, double epsilon);
+    void collectFaces();
 
     std::vector<Face> faces_;
     std::vector<std::int32_t> startFace_;  // per point: new face whose horizon edge starts there

@@ -61,14 +61,17 @@ void WeldBuilder::gatherJunction(NodeId cluster) {
     }
 }
 
-// Hull of the gathered rings, the arms' discs cut out as holes; on success appends the
-// faces that are not ring discs and returns true.
-bool WeldBuilder::hullJunction() {
-    points_.clear();
-    pointRing_.clear();
-    pointIndex_.clear();
+// Hull of the gathered rings (and the planes of its faces); false where it fails.
+// `firstRing` > 0: the rings from there on are added to the hull last built of those before.
+bool WeldBuilder::buildHull(std::size_t firstRing) {
+    if (firstRing == 0) {
+        points_.clear();
+        pointRing_.clear();
+        pointIndex_.clear();
+    }
+    const std::size_t firstPoint = points_.size();
     const Vec3 origin = hullRings_.front().ring.center;
-    for (std::size_t r = 0; r < hullRings_.size(); ++r) {
+    for (std::size_t r = firstRing; r < hullRings_.size(); ++r) {
         const HullRing& h = hullRings_[r];
         const AngleTable& angles = table(h.ring.n);
         for (int k = 0; k < h.ring.n; ++k) {
@@ -89,13 +92,20 @@ bool WeldBuilder::hullJunction() {
         }
     }
     if (points_.size() < 4) return false;
-    double extent = 0.0;
-    for (const Vec3& p : points_) extent = std::max(extent, p.cwiseAbs().maxCoeff());
-    for (std::size_t p = 0; p < points_.size(); ++p) {
-        const std::uint64_t seed = 3 * static_cast<std::uint64_t>(p);
-        points_[p] += 1e-9 * extent * Vec3(hashUnit(seed), hashUnit(seed + 1), hashUnit(seed + 2));
+    if (firstRing == 0) {
+        hullExtent_ = 0.0;
+        for (const Vec3& p : points_) hullExtent_ = std::max(hullExtent_, p.cwiseAbs().maxCoeff());
     }
-    if (!hull_.build(points_, 1e-11 * extent)) return false;
+    for (std::size_t p = firstPoint; p < points_.size(); ++p) {
+        const std::uint64_t seed = 3 * static_cast<std::uint64_t>(p);
+        points_[p] +=
+            1e-9 * hullExtent_ * Vec3(hashUnit(seed), hashUnit(seed + 1), hashUnit(seed + 2));
+    }
+    const double epsilon = 1e-11 * hullExtent_;
+    if (firstRing == 0 ? !hull_.build(points_, epsilon)
+                       : !hull_.extend(points_, static_cast<std::uint32_t>(firstPoint), epsilon)) {
+        return false;
+    }
     hullPlanes_.clear();
     for (const auto& face : hull_.faces()) {
         const Vec3& a = points_[face[0]];
@@ -103,9 +113,13 @@ bool WeldBuilder::hullJunction() {
         const double length = normal.norm();
         if (length > 0.0) hullPlanes_.push_back({normal / length, a.dot(normal) / length});
     }
+    return true;
+}
 
-    // Each hole: n faces at its apex, each on one ring edge, wound as the tube expects (a ring
-    // that starts its limb is seen from behind by the hull, one that ends it from the front).
+// Whether each arm's disc is a hole of the hull: n faces at its apex, each on one ring edge,
+// wound as the tube expects (a ring that starts its limb is seen from behind by the hull, one
+// that ends it from the front).
+bool WeldBuilder::holesAreRings() {
     std::vector<int>& coneFaces = coneFaces_;
     coneFaces.assign(hullRings_.size(), 0);
     for (const auto& face : hull_.faces()) {
@@ -124,13 +138,17 @@ bool WeldBuilder::hullJunction() {
     for (std::size_t r = 0; r < hullRings_.size(); ++r) {
         if (hullRings_[r].hole() && coneFaces[r] != hullRings_[r].ring.n) return false;
     }
+    return true;
+}
+
+// Appends the hull's faces that are not ring discs.
+void WeldBuilder::emitHull() {
     for (const auto& face : hull_.faces()) {
         if (pointIndex_[face[0]] < 0 || pointIndex_[face[1]] < 0 || pointIndex_[face[2]] < 0) {
             continue;
         }
         for (int e = 0; e < 3; ++e) mesh_.indices.push_back(seamVertex(face[e], face));
     }
-    return true;
 }
 
 // How far `point` lies inside the last hull built; negative outside (then not how far: the
@@ -186,8 +204,9 @@ bool WeldBuilder::addNodeBalls() {
 // hull), shrunk about its centre to stay behind every arm's ring plane by the clearance, as the
 // balls. Returns whether any was added (the hull must be built again).
 constexpr double kBendTurnCosine = 0.9848077530122080;  // cos 10°
-// Points of such a ring within this fraction of its radius outside the hull are left out.
-constexpr double kBendOutside = 0.05;
+// Points of such a ring within this fraction of its radius outside the hull are left out. At
+// 0.05 the solid union of ABOP 1.24c kept a crossing pair whatever its moves (session 24).
+constexpr double kBendOutside = 0.1;
 
 bool WeldBuilder::addBendRings() {
     const WeldSkeleton& s = skeleton_;
@@ -204,13 +223,22 @@ bool WeldBuilder::addBendRings() {
                        continuesChain_[static_cast<std::size_t>(h.limb)] != 0;
             });
         if (out == hullRings_.begin() + arms) continue;
+        // Not where a ring of a limb inside the junction is centred on the node already: two
+        // rings about one centre share the points where their planes cross (see
+        // meshAbsorbedLimb), and the solid union kept a crossing there (ABOP 1.24c).
+        const RingPlace atNode = ringAtPoint(s, inLimb, inLimb.count - 1);
+        if (std::any_of(hullRings_.begin(), hullRings_.begin() + arms, [&](const HullRing& h) {
+                return !h.hole() && (h.ring.center - atNode.center).norm() < 1e-6 * atNode.radius;
+            })) {
+            continue;
+        }
         const WeldLimb& outLimb = s.limbs[static_cast<std::size_t>(out->limb)];
         const std::uint32_t last = inLimb.first + inLimb.count - 1;
         const Vec3 into = (s.pointPosition[last] - s.pointPosition[last - 1]).normalized();
         const Vec3 onward =
             (s.pointPosition[outLimb.first + 1] - s.pointPosition[outLimb.first]).normalized();
         if (!(into.dot(onward) < kBendTurnCosine)) continue;
-        RingPlace place = ringAtPoint(s, inLimb, inLimb.count - 1);
+        RingPlace place = atNode;
         place.normal = (into + onward).normalized();
         double radius = place.radius;
         for (std::size_t j = 0; j < arms; ++j) {
@@ -408,27 +436,22 @@ void WeldBuilder::meshJunction(NodeId cluster) {
     gatherJunction(cluster);
     if (hullRings_.empty()) return;
     const std::size_t before = mesh_.indices.size();
-    bool closed = hullJunction();
-    if (closed && addNodeBalls()) {
-        mesh_.indices.resize(before);
-        closed = hullJunction();
-    }
+    bool closed = buildHull() && holesAreRings();
+    if (closed && addNodeBalls()) closed = buildHull() && holesAreRings();
     const std::size_t rings = hullRings_.size();
-    if (closed && addBendRings()) {
-        mesh_.indices.resize(before);
-        closed = hullJunction();
-        if (!closed) {  // without them, as before
-            report_.bendRings -= hullRings_.size() - rings;
-            hullRings_.resize(rings);
-            mesh_.indices.resize(before);
-            closed = hullJunction();
-        }
+    if (closed && addBendRings() && !(buildHull(rings) && holesAreRings())) {
+        report_.bendRings -= hullRings_.size() - rings;  // without them, as before
+        hullRings_.resize(rings);
+        closed = buildHull() && holesAreRings();
     }
+    if (closed) emitHull();
     const std::size_t vertices = mesh_.positions.size();
     if (closed) {
-        // Webs the shrinking left are meshed as tubes where the union will join them
-        // (kUnionWebLimit, welded_junction_refine.cpp); the shrunk vertices go again.
-        if (!params_.shrinkJunctions || !refineJunction(before, params_.solidUnion)) return;
+        // Webs the shrinking left (or a convex hull has) are meshed as tubes where the union
+        // will join them (kUnionWebLimit, welded_junction_refine.cpp); shrunk vertices go again.
+        const bool webbed = params_.shrinkJunctions ? refineJunction(before, params_.solidUnion)
+                                                    : params_.solidUnion && hullWebbed(before);
+        if (!webbed) return;
         ++report_.tubedForUnion;
         mesh_.positions.resize(vertices);
         mesh_.normals.resize(vertices);
@@ -439,7 +462,6 @@ void WeldBuilder::meshJunction(NodeId cluster) {
         fallbackJunction();
         return;
     }
-    mesh_.indices.resize(before);
     ++report_.fallbacks;
     fallbackJunction();
 }

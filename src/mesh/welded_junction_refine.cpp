@@ -714,7 +714,21 @@ double JunctionShape::distance(const Vec3& p, std::span<const Bound> order, Vec3
 
 // The junction's own branches (its arms' and absorbed limbs' segments within `reach` of
 // `centre`) as capsules, and its thinnest arm.
-void WeldBuilder::gatherOwnShape(double reach, const Vec3& centre) {
+// The junction's own branches (arms and absorbed limbs) within reach of its hull, the faces
+// from `firstIndex`: `centre` receives the mean of their corners (strictly inside a convex
+// hull), `reach` the largest distance of a corner from it. False where there is nothing to
+// judge by.
+bool WeldBuilder::gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& reach) {
+    if (mesh_.indices.size() == firstIndex) return false;
+    centre = Vec3::Zero();
+    for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
+        centre += mesh_.positions[mesh_.indices[i]].cast<double>();
+    }
+    centre /= static_cast<double>(mesh_.indices.size() - firstIndex);
+    reach = 0.0;
+    for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
+        reach = std::max(reach, (mesh_.positions[mesh_.indices[i]].cast<double>() - centre).norm());
+    }
     const WeldSkeleton& s = skeleton_;
     shape_.capsules.clear();
     shape_.thinnest = std::numeric_limits<double>::infinity();
@@ -729,6 +743,17 @@ void WeldBuilder::gatherOwnShape(double reach, const Vec3& centre) {
         }
     }
     shape_.fillet = kFillet * shape_.thinnest;
+    return !shape_.capsules.empty() && shape_.thinnest > 0.0;
+}
+
+// With the solid union and convex junctions (the retry where the shrunk ones do not unite
+// cleanly): whether the hull's faces from `firstIndex` lie more than kUnionWebLimit local radii
+// outside the junction's own branches; such junctions are tubes there too.
+bool WeldBuilder::hullWebbed(std::size_t firstIndex) {
+    Vec3 centre;
+    double reach = 0.0;
+    if (!gatherOwnShape(firstIndex, centre, reach)) return false;
+    return JunctionRefiner(mesh_, nullptr, shape_, firstIndex).websLeft(kUnionWebLimit);
 }
 
 // The branches within reach of the junction's hull (centre `centre`, radius `reach`): its arms
@@ -842,21 +867,11 @@ void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
 // (conifer: 58.3 units as hulls, 59.2 shrunk), and as hulls they bulge far out (conifer: a bump
 // of 11.8 twig radii beside the trunk, 0.26 shrunk).
 bool WeldBuilder::refineJunction(std::size_t firstIndex, bool judgeWebs) {
-    if (mesh_.indices.size() == firstIndex) return false;
-    // Centre: the mean of the hull's corners (strictly inside a convex hull).
-    Vec3 centre = Vec3::Zero();
-    for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
-        centre += mesh_.positions[mesh_.indices[i]].cast<double>();
-    }
-    centre /= static_cast<double>(mesh_.indices.size() - firstIndex);
+    Vec3 centre;
     double reach = 0.0;
-    for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
-        reach = std::max(reach, (mesh_.positions[mesh_.indices[i]].cast<double>() - centre).norm());
-    }
     // Webs are judged against the junction's own branches alone (few capsules: most junctions
     // have none, and this is all they cost); the shrinking then takes every branch in reach.
-    gatherOwnShape(reach, centre);
-    if (shape_.capsules.empty() || !(shape_.thinnest > 0.0)) return false;
+    if (!gatherOwnShape(firstIndex, centre, reach)) return false;
     JunctionRefiner refiner(mesh_, params_.tube.windAttributes ? &windOut_ : nullptr, shape_,
                             firstIndex);
     if (!refiner.markWebs([&](std::uint32_t a, std::uint32_t b) { return onArmRingEdge(a, b); }) ||

@@ -455,9 +455,8 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
         unionClosedSurfaces(mesh, &weld.solidUnion);
         // Shrunk junctions hug neighbouring branches within hundredths of a radius; where the
         // union's cut, rounded to float, leaves such grazes crossing or pinched (make
-        // union-check: ABOP 2.8c; 1.24a too before session 24 made webbed junctions tubes for
-        // the union), the convex hulls, which keep their distance, may unite cleanly. The
-        // better union is kept, the shrunk one on a tie.
+        // union-check, session 24: ABOP 1.24a and 2.8c), the convex hulls, which keep their
+        // distance, may unite cleanly. The better union is kept, the shrunk one on a tie.
         if (params.shrinkJunctions && unionDefects(weld.solidUnion) > 0) {
             WeldedMeshParams hulls = params;
             hulls.shrinkJunctions = false;

@@ -175,7 +175,7 @@ void writePicture(const std::array<ViewComparison, 3>& views, const std::string&
 // 15 %, rounded up: they must not grow. Nothing the tubes show is missing in any of them (the
 // hedges lost 0.11–0.18 % of their area within 0.24 radii until session 24 added the tube
 // mesher's ring at a branch node where the branch bends there: the hull had cut its outer
-// corner; 0.01–0.02 % within 0.13 since). They gain silhouette where junction hulls still span
+// corner; 0.01–0.02 % within 0.19 since). They gain silhouette where junction hulls still span
 // more than the crotch:
 // - ABOP 1.27 and 1.31a: junctions over clusters of tips whose limbs were absorbed or whose
 //   nodes merged, subdivided no finer than 8 pieces per hull edge (a few tenths of a unit, the
