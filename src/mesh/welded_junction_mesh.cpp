@@ -202,7 +202,7 @@ bool WeldBuilder::addNodeBalls() {
 // radii, nearly all of it at such bends; session 24). Where the chain turns by more than 10°
 // there, the tube mesher's ring at the node is added as hull points (those clearly outside the
 // hull), shrunk about its centre to stay behind every arm's ring plane by the clearance, as the
-// balls. Returns whether any was added (the hull must be built again).
+// balls. Returns whether any was added (its points are then added to the hull: buildHull).
 constexpr double kBendTurnCosine = 0.9848077530122080;  // cos 10°
 // Points of such a ring within this fraction of its radius outside the hull are left out. At
 // 0.05 the solid union of ABOP 1.24c kept a crossing pair whatever its moves (session 24).
@@ -444,25 +444,25 @@ void WeldBuilder::meshJunction(NodeId cluster) {
         hullRings_.resize(rings);
         closed = buildHull() && holesAreRings();
     }
-    if (closed) emitHull();
-    const std::size_t vertices = mesh_.positions.size();
-    if (closed) {
-        // Webs the shrinking left (or a convex hull has) are meshed as tubes where the union
-        // will join them (kUnionWebLimit, welded_junction_refine.cpp); shrunk vertices go again.
-        const bool webbed = params_.shrinkJunctions ? refineJunction(before, params_.solidUnion)
-                                                    : params_.solidUnion && hullWebbed(before);
-        if (!webbed) return;
-        ++report_.tubedForUnion;
-        mesh_.positions.resize(vertices);
-        mesh_.normals.resize(vertices);
-        mesh_.tangents.resize(vertices);
-        mesh_.uvs.resize(vertices);
-        if (params_.tube.windAttributes) windOut_.resize(vertices);
-        mesh_.indices.resize(before);
+    if (!closed) {
+        ++report_.fallbacks;
         fallbackJunction();
         return;
     }
-    ++report_.fallbacks;
+    emitHull();
+    // Webs the shrinking left (or a convex hull has) are meshed as tubes where the union will
+    // join them (kUnionWebLimit, welded_junction_refine.cpp); shrunk vertices go again.
+    const std::size_t vertices = mesh_.positions.size();
+    const bool webbed = params_.shrinkJunctions ? refineJunction(before, params_.solidUnion)
+                                                : params_.solidUnion && hullWebbed(before);
+    if (!webbed) return;
+    ++report_.tubedForUnion;
+    mesh_.positions.resize(vertices);
+    mesh_.normals.resize(vertices);
+    mesh_.tangents.resize(vertices);
+    mesh_.uvs.resize(vertices);
+    if (params_.tube.windAttributes) windOut_.resize(vertices);
+    mesh_.indices.resize(before);
     fallbackJunction();
 }
 
