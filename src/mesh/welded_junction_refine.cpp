@@ -97,11 +97,11 @@ constexpr int kShorteningRounds = 6;
 // pull in, over clusters of tips not star-shaped from any centre tried) is meshed as capped
 // tubes instead, as a fallback junction, and the union joins them: 1 radius is the tolerance
 // of the silhouette gained against the tube mesh (tests/mesh/welded_silhouette_test.cpp).
-// Measured in session 24 (dev build, every shipped example united): 0–72 junctions per
-// example (ABOP 1.27 12, 1.31a 5, hedges 2–3), and every example within the silhouette
-// tolerance united (1.27 4.0 % of the area and 5.35 radii gained → 0, 1.31a 1.2 % → 0, hedges
-// 0.47–0.82 % → 0.22–0.33 %), every union clean at its first attempt (1.24a's shrunk
-// junctions kept 12 crossing pairs before and were united as hulls).
+// Where the convex hulls are united instead (WeldReport::convexForUnion), hulls with such
+// faces are tubes too (hullWebbed). Measured in session 24 (every shipped example united):
+// 0–79 junctions per example (ABOP 1.27 12, 1.31a 5, hedges 2–3), and every example within
+// the silhouette tolerances united (1.27 4.0 % of the area and 5.35 radii gained → 0, 1.31a
+// 1.2 % → 0, hedges 0.47–0.82 % → 0.22–0.33 %; docs/welded.md, Shrunk junctions, step 7).
 constexpr double kUnionWebLimit = 1.0;
 
 // A hash of the bits of a float position: vertices at one position (texture seam copies)
@@ -128,14 +128,8 @@ public:
     bool markWebs(WholeEdge whole) {
         double longest = 0.0;
         for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
+            if (!faceFarOutside(f, kRefineExcess)) continue;
             const std::array<std::uint32_t, 3> v = face(f);
-            const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
-            bool webbed = false;
-            for (const Vec3& probe : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)),
-                                      Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a))}) {
-                if ((webbed = shape_.farOutside(probe, kRefineExcess))) break;
-            }
-            if (!webbed) continue;
             for (int e = 0; e < 3; ++e) {
                 const std::uint32_t p = v[static_cast<std::size_t>(e)];
                 const std::uint32_t q = v[static_cast<std::size_t>((e + 1) % 3)];
@@ -267,12 +261,7 @@ public:
     // branches (its centre or an edge's midpoint).
     bool websLeft(double limit) const {
         for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
-            const std::array<std::uint32_t, 3> v = face(f);
-            const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
-            for (const Vec3& probe : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)),
-                                      Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a))}) {
-                if (shape_.farOutside(probe, limit)) return true;
-            }
+            if (faceFarOutside(f, limit)) return true;
         }
         return false;
     }
@@ -317,6 +306,17 @@ private:
     }
     std::array<std::uint32_t, 3> face(std::size_t f) const {
         return {mesh_.indices[f], mesh_.indices[f + 1], mesh_.indices[f + 2]};
+    }
+    // Whether face f's centre or an edge's midpoint lies more than `limit` local radii outside
+    // the branches (JunctionShape::farOutside).
+    bool faceFarOutside(std::size_t f, double limit) const {
+        const std::array<std::uint32_t, 3> v = face(f);
+        const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
+        for (const Vec3& probe : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)), Vec3(0.5 * (b + c)),
+                                  Vec3(0.5 * (c + a))}) {
+            if (shape_.farOutside(probe, limit)) return true;
+        }
+        return false;
     }
 
     // A new vertex on the hull at `p`: texture and tangent blended from `corners` by `weights`,
@@ -712,12 +712,10 @@ double JunctionShape::distance(const Vec3& p, std::span<const Bound> order, Vec3
     return sum.result(gradient);
 }
 
-// The junction's own branches (its arms' and absorbed limbs' segments within `reach` of
-// `centre`) as capsules, and its thinnest arm.
-// The junction's own branches (arms and absorbed limbs) within reach of its hull, the faces
-// from `firstIndex`: `centre` receives the mean of their corners (strictly inside a convex
-// hull), `reach` the largest distance of a corner from it. False where there is nothing to
-// judge by.
+// The junction's own branches (its arms' and absorbed limbs' segments within reach of its hull,
+// the faces from `firstIndex`) as capsules, and its thinnest arm: `centre` receives the mean of
+// the faces' corners (strictly inside a convex hull), `reach` the largest distance of a corner
+// from it. False where there is nothing to judge by.
 bool WeldBuilder::gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& reach) {
     if (mesh_.indices.size() == firstIndex) return false;
     centre = Vec3::Zero();
