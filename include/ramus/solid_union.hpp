@@ -25,7 +25,7 @@ struct SolidUnionReport {
     std::size_t patches = 0;           ///< pieces of surface between the intersection curves
     std::size_t keptPatches = 0;       ///< of those, the ones on the union's boundary
     std::size_t newVertices = 0;       ///< positions on the intersection curves
-    std::size_t attempts = 0;          ///< tries with different moves (at most 3)
+    std::size_t attempts = 0;          ///< tries with different moves (at most 5)
     std::size_t cavitiesFilled = 0;    ///< enclosed pockets whose inner surface was removed
     std::size_t enclosedPieces = 0;    ///< pieces inside such pockets, removed with them
     /// separate pieces with < 1e-6 of the largest piece's volume (wedges the cut leaves where
@@ -64,8 +64,8 @@ struct SolidUnionReport {
 /// corners of crossing pairs are moved apart by a few float steps (at most 1e-5 of the extent,
 /// report->crossingMoves) where that lowers the crossings and turns no triangle over, and the
 /// corners of pinched sheets into their own solid where that adds no crossing; up
-/// to three moves (1e-5, 3e-5, 1e-4) are tried and the first result without crossings and
-/// pinched edges, else the one with the fewest of both, is kept
+/// to five moves (1e-5, 3e-5, 1e-4, 2e-5, 6e-5) are tried and the first result without crossings
+/// and pinched edges, else the one with the fewest of both, is kept
 /// (report->remainingIntersections, report->pinchedEdges). On any failure (input not closed, a
 /// degenerate configuration the refinement does not handle, no result that passes the check) the
 /// mesh is left as it was and the reason goes to report->failure. Deterministic. Returns
