@@ -884,9 +884,8 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     }
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         if (intersecting[t]) continue;
-        const Vec3* c = &moved[3 * t];
-        uncrossed.add(
-            TriangleSet::keyOf(c[0].cast<float>(), c[1].cast<float>(), c[2].cast<float>()));
+        const std::uint32_t* v = &fan[3 * t];
+        uncrossed.add(TriangleSet::keyOf(movedFloat[v[0]], movedFloat[v[1]], movedFloat[v[2]]));
     }
     uncrossed.seal();
     m = canonicalMesh(std::move(soup));
