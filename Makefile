@@ -114,6 +114,8 @@ bench-peers: build
 # minute less to compile, and CI compiles that configuration too.
 FUZZ      ?= build/fuzz
 FUZZ_SECS ?= 600
+# The smoke run replays every seed corpus (a few files a target) and fuzzes on for the rest.
+FUZZ_SMOKE_SECS ?= 10
 fuzz-build: deps
 	@CXX=clang++ cmake -S . -B $(FUZZ) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" \
 	  -DRAMUS_BUILD_FUZZ=ON -DRAMUS_BUILD_TESTS=OFF -DRAMUS_BUILD_BENCH=OFF -DRAMUS_UNITY_BUILD=ON \
@@ -124,7 +126,7 @@ fuzz: fuzz-build
 	@FUZZ_JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ) $(FUZZ_SECS)
 
 fuzz-smoke: fuzz-build
-	@FUZZ_JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ) 20
+	@FUZZ_JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ) $(FUZZ_SMOKE_SECS)
 
 clean:
 	rm -rf build $(OUT)
