@@ -35,8 +35,9 @@ struct SolidUnionReport {
     /// where surfaces graze each other, rounding the cut positions to float can make them
     /// cross. The best of the attempts is kept.
     std::size_t remainingIntersections = 0;
-    /// Corners moved a few float steps (at most 1e-5 of the extent) to separate triangle pairs
-    /// that rounding made cross, or sheets it pinched together along an edge;
+    /// Corners moved a few float steps (at most 1e-5 of the extent, in further rounds where
+    /// some are left 3e-5 and 1e-4) to separate triangle pairs that rounding made cross, or
+    /// sheets it pinched together along an edge;
     /// remainingIntersections and pinchedEdges count what is left after.
     std::size_t crossingMoves = 0;
     /// Edges of the result (welded by position) where k > 1 sheets meet, each sheet using the
@@ -63,7 +64,8 @@ struct SolidUnionReport {
 /// can break that, pinch sheets together along an edge or make grazing surfaces cross. The
 /// corners of crossing pairs are moved apart by a few float steps (at most 1e-5 of the extent,
 /// report->crossingMoves) where that lowers the crossings and turns no triangle over, and the
-/// corners of pinched sheets into their own solid where that adds no crossing; up
+/// corners of pinched sheets into their own solid where that adds no crossing, in up to three
+/// rounds while some are left (at most 1e-5, 3e-5, 1e-4 of the extent); up
 /// to five moves (1e-5, 3e-5, 1e-4, 2e-5, 6e-5) are tried and the first result without crossings
 /// and pinched edges, else the one with the fewest of both, is kept
 /// (report->remainingIntersections, report->pinchedEdges). On any failure (input not closed, a

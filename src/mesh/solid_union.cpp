@@ -30,7 +30,7 @@
 //    or pinch two sheets together along an edge: the corners of each crossing pair
 //    are moved a few float steps apart, where that lowers the crossings and turns no triangle
 //    over, and then one sheet's corners at a pinched edge into its own solid, where that adds
-//    no crossing (crossing_repair.hpp).
+//    no crossing (crossing_repair.hpp); up to three rounds, each allowed larger moves.
 // 7. Rounding can also break the check: up to five moves are tried, and the first result
 //    without crossings or pinched edges, else the one with the fewest of both, replaces the
 //    mesh.
@@ -58,6 +58,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -226,21 +227,24 @@ using Triangle = Kernel::Triangle_3;
 // Signed crossings of rays with a fixed set of triangles, over an AABB tree of them: the
 // winding number of the surfaces they make at a ray's start (all wound outward), with chosen
 // triangles left out.
+// Built before use, so that threads can cast rays at once.
 class RayCrossings {
 public:
     explicit RayCrossings(std::vector<Triangle> triangles)
-        : triangles_(std::move(triangles)), tree_(triangles_.cbegin(), triangles_.cend()) {}
+        : triangles_(std::move(triangles)), tree_(triangles_.cbegin(), triangles_.cend()) {
+        tree_.build();
+    }
     RayCrossings(const RayCrossings&) = delete;
     RayCrossings& operator=(const RayCrossings&) = delete;
 
     // +1 for every triangle the ray from `origin` along `d` leaves (normal along d), -1 for
     // every one it enters; triangle i left out where skip(i).
     template <class Skip>
-    int count(const Point& origin, const Vector& d, Skip skip) {
-        hits_.clear();
-        tree_.all_intersected_primitives(Kernel::Ray_3(origin, d), std::back_inserter(hits_));
+    int count(const Point& origin, const Vector& d, Skip skip) const {
+        std::vector<Iterator> hits;
+        tree_.all_intersected_primitives(Kernel::Ray_3(origin, d), std::back_inserter(hits));
         int winding = 0;
-        for (const Iterator hit : hits_) {
+        for (const Iterator hit : hits) {
             if (skip(static_cast<std::size_t>(hit - triangles_.cbegin()))) continue;
             const Vector n = CGAL::cross_product(hit->vertex(1) - hit->vertex(0),
                                                  hit->vertex(2) - hit->vertex(0));
@@ -254,8 +258,25 @@ private:
     using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
     std::vector<Triangle> triangles_;
     CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree_;
-    std::vector<Iterator> hits_;
 };
+
+// Calls task(i) for every i < n, on up to as many threads as the machine has cores (at most
+// 4), each thread taking every k-th i: for independent tasks whose results go to slot i, so the
+// result does not depend on the threads. The patch and piece votes of large unions took 10–20 %
+// of their time (ABOP 1.24b: 1.4 s an attempt on one core).
+template <class Task>
+void forEachOnCores(std::size_t n, const Task& task) {
+    const std::size_t threads =
+        std::min<std::size_t>({std::max(1u, std::thread::hardware_concurrency()), 4, n / 64 + 1});
+    std::vector<std::thread> workers;
+    for (std::size_t w = 1; w < threads; ++w) {
+        workers.emplace_back([&task, n, threads, w] {
+            for (std::size_t i = w; i < n; i += threads) task(i);
+        });
+    }
+    for (std::size_t i = 0; i < n; i += threads) task(i);
+    for (std::thread& worker : workers) worker.join();
+}
 
 // Whether at least two of the votes vote(0), vote(1), vote(2) are for: the third is asked only
 // where the first two disagree.
@@ -324,8 +345,8 @@ std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_
         }
         RayCrossings rays(std::move(solid));
         std::vector<char> enclosed(count, 0);
-        for (std::uint32_t c = 0; c < count; ++c) {
-            if (!keepComponent[c]) continue;
+        forEachOnCores(count, [&](std::size_t c) {
+            if (!keepComponent[c]) return;
             const std::size_t t = firstTriangle[c];
             const Vec3 centre = (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0;
             enclosed[c] = majorityOfThree([&](std::uint64_t ray) {
@@ -335,7 +356,7 @@ std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_
                 return rays.count(Point(centre.x(), centre.y(), centre.z()), d,
                                   [&](std::size_t hit) { return solidComponent[hit] == c; }) >= 1;
             });
-        }
+        });
         for (std::uint32_t c = 0; c < count; ++c) {
             if (enclosed[c]) {
                 keepComponent[c] = 0;
@@ -541,7 +562,7 @@ std::vector<char> classifyPatches(const SurfaceMesh& m,
     }
     RayCrossings rays(std::move(triangles));
     std::vector<char> keep(patches, 0);
-    for (std::size_t p = 0; p < patches; ++p) {
+    forEachOnCores(patches, [&](std::size_t p) {
         keep[p] = majorityOfThree([&](std::uint64_t ray) {
             const std::uint64_t seed = 3 * (3 * p + ray);
             const Vector d =
@@ -551,7 +572,7 @@ std::vector<char> classifyPatches(const SurfaceMesh& m,
             return rays.count(centres[p], d, [&](std::size_t hit) { return hit == largest[p]; }) ==
                    0;
         });
-    }
+    });
     return keep;
 }
 
@@ -681,17 +702,47 @@ struct DirectedEdge {
 
 std::uint32_t nextCorner(std::uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; }
 
-std::vector<DirectedEdge> directedEdges(const std::vector<std::uint32_t>& weld,
-                                        const std::vector<std::uint32_t>& indices) {
-    std::vector<DirectedEdge> edges(indices.size());
-    for (std::uint32_t c = 0; c < indices.size(); ++c) {
-        const std::uint32_t next = nextCorner(c);
-        edges[c] = {std::uint64_t{weld[indices[c]]} << 32 | weld[indices[next]],
-                    std::uint64_t{indices[c]} << 32 | indices[next], c};
+// The directed edges of a mesh in that order, bucketed by their start a: a counting sort by a,
+// then each bucket (a vertex's few edges) sorted, and the uses of an edge found in its start's
+// bucket. Linear in the corners; a sort of all edges and binary searches over them took a
+// quarter of the union's own bookkeeping on tree_3d (230 k triangles).
+class DirectedEdges {
+public:
+    // `weld`: per mesh vertex its position's id, below `positions`.
+    DirectedEdges(const std::vector<std::uint32_t>& weld, std::uint32_t positions,
+                  const std::vector<std::uint32_t>& indices)
+        : edges_(indices.size()), start_(std::size_t{positions} + 1, 0) {
+        for (std::uint32_t c = 0; c < indices.size(); ++c) ++start_[weld[indices[c]] + 1];
+        std::partial_sum(start_.begin(), start_.end(), start_.begin());
+        std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+        for (std::uint32_t c = 0; c < indices.size(); ++c) {
+            const std::uint32_t next = nextCorner(c);
+            const std::uint32_t a = weld[indices[c]];
+            edges_[fill[a]++] = {std::uint64_t{a} << 32 | weld[indices[next]],
+                                 std::uint64_t{indices[c]} << 32 | indices[next], c};
+        }
+        for (std::uint32_t a = 0; a < positions; ++a) {
+            std::sort(edges_.begin() + start_[a], edges_.begin() + start_[a + 1]);
+        }
     }
-    std::sort(edges.begin(), edges.end());
-    return edges;
-}
+
+    const std::vector<DirectedEdge>& all() const { return edges_; }
+
+    // The uses of the welded edge `key` (a << 32 | b), as a range of all().
+    std::pair<const DirectedEdge*, const DirectedEdge*> uses(std::uint64_t key) const {
+        const std::size_t a = key >> 32;
+        const DirectedEdge* first = edges_.data() + start_[a];
+        const DirectedEdge* last = edges_.data() + start_[a + 1];
+        first = std::lower_bound(first, last, DirectedEdge{key, 0, 0});
+        const DirectedEdge* end = first;
+        while (end != last && end->welded == key) ++end;
+        return {first, end};
+    }
+
+private:
+    std::vector<DirectedEdge> edges_;
+    std::vector<std::uint32_t> start_;  // per position a: its first edge; then the end
+};
 
 std::uint64_t reversed(std::uint64_t edge) { return edge << 32 | edge >> 32; }
 
@@ -700,23 +751,18 @@ std::uint64_t reversed(std::uint64_t edge) { return edge << 32 | edge >> 32; }
 // way where k surfaces share the edge, as two tips ending at one point from different
 // directions share their caps' spokes), and no triangle has two corners at one position.
 bool closedSurfaces(const std::vector<std::uint32_t>& weld,
-                    const std::vector<std::uint32_t>& indices,
-                    const std::vector<DirectedEdge>& edges) {
+                    const std::vector<std::uint32_t>& indices, const DirectedEdges& table) {
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
         const std::uint32_t a = weld[indices[t]], b = weld[indices[t + 1]],
                             c = weld[indices[t + 2]];
         if (a == b || b == c || c == a) return false;
     }
-    auto count = [&](std::uint64_t key) {
-        auto it = std::lower_bound(edges.begin(), edges.end(), DirectedEdge{key, 0, 0});
-        std::ptrdiff_t n = 0;
-        for (; it != edges.end() && it->welded == key; ++it) ++n;
-        return n;
-    };
+    const std::vector<DirectedEdge>& edges = table.all();
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
         while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
-        if (count(reversed(edges[i].welded)) != static_cast<std::ptrdiff_t>(j - i)) return false;
+        const auto [first, last] = table.uses(reversed(edges[i].welded));
+        if (last - first != static_cast<std::ptrdiff_t>(j - i)) return false;
         i = j;
     }
     return true;
@@ -743,8 +789,8 @@ std::size_t pinchedEdges(const std::vector<DirectedEdge>& edges) {
 // the rest in order, so the surfaces keep their own vertices there and the move pulls them
 // apart. Numbered in order of first appearance; `count` receives how many.
 std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices,
-                                       const std::vector<DirectedEdge>& edges,
-                                       std::uint32_t* count) {
+                                       const DirectedEdges& table, std::uint32_t* count) {
+    const std::vector<DirectedEdge>& edges = table.all();
     const std::size_t corners = indices.size();
     std::vector<std::uint32_t> parent(corners);
     std::iota(parent.begin(), parent.end(), 0u);
@@ -759,11 +805,9 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
         std::size_t j = i;
         while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
         const std::uint64_t reverse = reversed(edges[i].welded);
-        if (edges[i].welded < reverse) {  // each undirected edge once
-            const auto first =
-                std::lower_bound(edges.begin(), edges.end(), DirectedEdge{reverse, 0, 0});
-            const auto last = first + static_cast<std::ptrdiff_t>(j - i);
-            for (int pass = 0; pass < 2; ++pass) {  // same input vertices first, then any
+        if (edges[i].welded < reverse) {                     // each undirected edge once
+            const auto [first, last] = table.uses(reverse);  // as many as a→b: closed
+            for (int pass = 0; pass < 2; ++pass) {           // same input vertices first, then any
                 for (std::size_t k = i; k < j; ++k) {
                     if (paired[edges[k].corner]) continue;
                     for (auto twin = first; twin != last; ++twin) {
@@ -805,11 +849,11 @@ struct Surfaces {
 Surfaces surfacesOf(const Mesh& mesh) {
     Surfaces s;
     s.weld = weldByPosition(mesh.positions, &s.positions);
-    const std::vector<DirectedEdge> edges = directedEdges(s.weld, mesh.indices);
+    const DirectedEdges edges(s.weld, s.positions, mesh.indices);
     s.closed = closedSurfaces(s.weld, mesh.indices, edges);
     if (s.closed) {
         s.fan = fanVertices(mesh.indices, edges, &s.vertices);
-        s.pinchedEdges = pinchedEdges(edges);
+        s.pinchedEdges = pinchedEdges(edges.all());
     }
     return s;
 }
@@ -939,8 +983,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     keepTriangles(out, uncollapsedTriangles(outWeld, out.indices));
     if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
     outWeld = weldByPosition(out.positions, &outDistinct);
-    const std::vector<DirectedEdge> outEdges = directedEdges(outWeld, out.indices);
-    if (!closedSurfaces(outWeld, out.indices, outEdges)) {
+    if (!closedSurfaces(outWeld, out.indices, DirectedEdges(outWeld, outDistinct, out.indices))) {
         return failWith(report, "the union's surface is not closed after rounding", Outcome::retry);
     }
     keepTriangles(out, outerSurfaces(out, outWeld, outDistinct, report));
@@ -1086,10 +1129,13 @@ TriangleSet trianglesApart(const Mesh& mesh, const std::vector<detail::TriangleP
     return apart;
 }
 
-// Largest move of a corner that separates a crossing pair, as a fraction of the mesh's extent:
-// the first attempt's own move (grazes measured reached at most 5.7e-6 of it across the other
-// triangle, docs/welded.md).
-constexpr double kSeparationMove = 1e-5;
+// Largest moves of a corner that separates a crossing pair or parts pinched sheets, as fractions
+// of the mesh's extent, one round of repairs each while defects are left: first the first
+// attempt's own move (grazes measured reached at most 5.7e-6 of it across the other triangle,
+// docs/welded.md), then the next attempts' (a new attempt moves every vertex that far). Before
+// session 26 there was one round: the few pairs or pinched edges it left cost a whole new attempt
+// (ABOP 1.24a, 1.24b, 1.31a: 1 or 2 defects after the first).
+constexpr double kSeparationMoves[] = {1e-5, 3e-5, 1e-4};
 
 // The closed surfaces `surfaces` of `mesh` as surface vertices and triangles for
 // crossing_repair.hpp: all copies of a surface vertex move together, and a mesh vertex that
@@ -1133,7 +1179,8 @@ bool takeMoves(Mesh& mesh, Surfaces& surfaces, const detail::CrossingSurface& su
 // Surface vertices at pinched edges (closed `surfaces`): at each edge where k > 1 sheets meet,
 // the two corners of every sheet but the first.
 std::vector<std::uint32_t> pinchedSheetCorners(const Mesh& mesh, const Surfaces& surfaces) {
-    const std::vector<DirectedEdge> edges = directedEdges(surfaces.weld, mesh.indices);
+    const DirectedEdges table(surfaces.weld, surfaces.positions, mesh.indices);
+    const std::vector<DirectedEdge>& edges = table.all();
     std::vector<std::uint32_t> vertices;
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
@@ -1157,7 +1204,7 @@ std::vector<std::uint32_t> pinchedSheetCorners(const Mesh& mesh, const Surfaces&
 // pinched edges.
 void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& uncrossed,
                              SolidUnionReport& report) {
-    const double maxMove = kSeparationMove * mesh.bounds().extent().maxCoeff();
+    const double extent = mesh.bounds().extent().maxCoeff();
     std::vector<detail::TrianglePair> crossing = crossingPairs(mesh, surfaces, uncrossed);
     // Moves `surface` (crossingSurfaceOf(mesh, surfaces), moved by `repair`) into the mesh and
     // counts the crossings again, where they can have changed: at the triangles that moved or
@@ -1169,14 +1216,18 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& u
         report.crossingMoves += repair.movedVertices;
         crossing = crossingPairs(mesh, surfaces, apart);
     };
-    if (!crossing.empty()) {
-        detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
-        take(surface, detail::separateCrossings(surface, crossing, maxMove));
-    }
-    if (surfaces.pinchedEdges > 0) {
-        detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
-        const std::vector<std::uint32_t> corners = pinchedSheetCorners(mesh, surfaces);
-        take(surface, detail::unpinchVertices(surface, corners, maxMove));
+    for (const double move : kSeparationMoves) {
+        if (crossing.empty() && surfaces.pinchedEdges == 0) break;
+        const double maxMove = move * extent;
+        if (!crossing.empty()) {
+            detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
+            take(surface, detail::separateCrossings(surface, crossing, maxMove));
+        }
+        if (surfaces.pinchedEdges > 0) {
+            detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
+            const std::vector<std::uint32_t> corners = pinchedSheetCorners(mesh, surfaces);
+            take(surface, detail::unpinchVertices(surface, corners, maxMove));
+        }
     }
     report.remainingIntersections = crossing.size();
     report.pinchedEdges = surfaces.pinchedEdges;
