@@ -55,6 +55,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -226,8 +227,7 @@ using Triangle = Kernel::Triangle_3;
 
 // Signed crossings of rays with a fixed set of triangles, over an AABB tree of them: the
 // winding number of the surfaces they make at a ray's start (all wound outward), with chosen
-// triangles left out.
-// Built before use, so that threads can cast rays at once.
+// triangles left out. The tree is built at once, so that threads can cast rays together.
 class RayCrossings {
 public:
     explicit RayCrossings(std::vector<Triangle> triangles)
@@ -264,18 +264,26 @@ private:
 // 4), each thread taking every k-th i: for independent tasks whose results go to slot i, so the
 // result does not depend on the threads. The patch and piece votes of large unions took 10–20 %
 // of their time (ABOP 1.24b: 1.4 s an attempt on one core).
+// An exception from a task is passed on to the caller once every thread has finished.
 template <class Task>
 void forEachOnCores(std::size_t n, const Task& task) {
     const std::size_t threads =
         std::min<std::size_t>({std::max(1u, std::thread::hardware_concurrency()), 4, n / 64 + 1});
-    std::vector<std::thread> workers;
-    for (std::size_t w = 1; w < threads; ++w) {
-        workers.emplace_back([&task, n, threads, w] {
+    std::vector<std::exception_ptr> failures(threads);
+    auto share = [&](std::size_t w) {
+        try {
             for (std::size_t i = w; i < n; i += threads) task(i);
-        });
-    }
-    for (std::size_t i = 0; i < n; i += threads) task(i);
+        } catch (...) {
+            failures[w] = std::current_exception();
+        }
+    };
+    std::vector<std::thread> workers;
+    for (std::size_t w = 1; w < threads; ++w) workers.emplace_back(share, w);
+    share(0);
     for (std::thread& worker : workers) worker.join();
+    for (const std::exception_ptr& failure : failures) {
+        if (failure) std::rethrow_exception(failure);
+    }
 }
 
 // Whether at least two of the votes vote(0), vote(1), vote(2) are for: the third is asked only
@@ -846,16 +854,26 @@ struct Surfaces {
     std::size_t pinchedEdges = 0;     ///< edges where several sheets meet (when closed)
 };
 
-Surfaces surfacesOf(const Mesh& mesh) {
+// From the mesh's triangles and `weld`, its vertices' position ids (weldByPosition, `positions`
+// of them): everything in Surfaces follows from these two.
+Surfaces surfacesOf(std::vector<std::uint32_t> weld, std::uint32_t positions,
+                    const std::vector<std::uint32_t>& indices) {
     Surfaces s;
-    s.weld = weldByPosition(mesh.positions, &s.positions);
-    const DirectedEdges edges(s.weld, s.positions, mesh.indices);
-    s.closed = closedSurfaces(s.weld, mesh.indices, edges);
+    s.weld = std::move(weld);
+    s.positions = positions;
+    const DirectedEdges edges(s.weld, s.positions, indices);
+    s.closed = closedSurfaces(s.weld, indices, edges);
     if (s.closed) {
-        s.fan = fanVertices(mesh.indices, edges, &s.vertices);
+        s.fan = fanVertices(indices, edges, &s.vertices);
         s.pinchedEdges = pinchedEdges(edges.all());
     }
     return s;
+}
+
+Surfaces surfacesOf(const Mesh& mesh) {
+    std::uint32_t positions = 0;
+    std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &positions);
+    return surfacesOf(std::move(weld), positions, mesh.indices);
 }
 
 enum class Outcome { done, badInput, retry };
@@ -1167,7 +1185,12 @@ bool takeMoves(Mesh& mesh, Surfaces& surfaces, const detail::CrossingSurface& su
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         mesh.positions[mesh.indices[c]] = surface.points[surfaces.fan[c]];
     }
-    Surfaces moved = surfacesOf(mesh);
+    std::uint32_t positions = 0;
+    std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &positions);
+    // Ids are numbered in order of first appearance: the same ids, the same positions coincide
+    // as before, and so the same surfaces (most moves part nothing and join nothing).
+    if (weld == surfaces.weld) return true;
+    Surfaces moved = surfacesOf(std::move(weld), positions, mesh.indices);
     if (!moved.closed) {
         mesh.positions = before;
         return false;
