@@ -1080,23 +1080,20 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
 // Pairs of triangles of the closed surfaces `mesh` that intersect other than in shared corners
 // or edges (exact predicates on the float positions, welded by position): what rounding the
 // cut positions to float left where surfaces only graze each other. In order.
-// `surfaces`: surfacesOf(mesh), closed (the result passed closedSurfaces). Triangles of
-// `uncrossed` (input triangles that crossed nothing, where they still are) do not cross each
-// other, so only the triangles near others are searched (tree_3d at 8 derivations: 65 k of
-// 230 k; the whole mesh took 0.4 s a search).
+// `surfaces`: surfacesOf(mesh), closed (the result passed closedSurfaces). Triangles that are
+// not `suspect` (input triangles that crossed nothing, where they still are; after moves, those
+// that neither moved nor crossed) do not cross each other, so only the suspects and the
+// triangles near them are searched (tree_3d at 8 derivations: 65 k of 230 k; the whole mesh
+// took 0.4 s a search); an empty `suspect` searches the whole mesh.
 std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces& surfaces,
-                                                const TriangleSet& uncrossed) {
+                                                const std::vector<char>& suspect) {
     const std::vector<std::uint32_t>& weld = surfaces.weld;
-    std::vector<char> suspect(mesh.triangleCount(), 1);
-    for (std::size_t t = 0; t < mesh.triangleCount() && !uncrossed.empty(); ++t) {
-        suspect[t] = !uncrossed.contains(TriangleSet::keyOf(mesh, t));
-    }
     std::vector<std::uint32_t> all(mesh.triangleCount());
     std::iota(all.begin(), all.end(), 0u);
     std::vector<detail::TrianglePair> pairs;
     // A part of the surfaces can pinch at a vertex where the whole does not, which a surface
     // mesh does not take: then the whole is searched.
-    if (uncrossed.empty() ||
+    if (suspect.empty() ||
         !intersectingPairs(mesh, surfaces, trianglesNear(mesh, suspect), pairs)) {
         intersectingPairs(mesh, surfaces, all, pairs);
     }
@@ -1115,7 +1112,8 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
     auto crossingOf = [&](const std::vector<detail::TrianglePair>& found, bool withSuspectOnly) {
         std::vector<detail::TrianglePair> crossing;
         for (const auto& [s, t] : found) {
-            if ((withSuspectOnly && !suspect[s] && !suspect[t]) || shareAPosition(s, t)) continue;
+            const bool apart = !suspect.empty() && !suspect[s] && !suspect[t];
+            if ((withSuspectOnly && apart) || shareAPosition(s, t)) continue;
             crossing.emplace_back(std::min(s, t), std::max(s, t));
         }
         std::sort(crossing.begin(), crossing.end());
@@ -1125,7 +1123,7 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
 #if defined(RAMUS_ENABLE_ASSERTS)
     // The premise of the local search, checked in the tests: the whole mesh has no other pair
     // (it failed in Release when GCC left the moved positions unrounded, CMakeLists.txt).
-    if (!uncrossed.empty()) {
+    if (!suspect.empty()) {
         std::vector<detail::TrianglePair> everyPair;
         intersectingPairs(mesh, surfaces, all, everyPair);
         RAMUS_ASSERT(crossingOf(everyPair, false) == crossing);
@@ -1134,17 +1132,29 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
     return crossing;
 }
 
-// The triangles of `mesh` in none of the pairs `crossing` (all its crossing pairs): none of them
-// crosses another while they stay where they are.
-TriangleSet trianglesApart(const Mesh& mesh, const std::vector<detail::TrianglePair>& crossing) {
-    std::vector<char> crosses(mesh.triangleCount(), 0);
-    for (const auto& [s, t] : crossing) crosses[s] = crosses[t] = 1;
-    TriangleSet apart;
+// Per triangle of `mesh`: whether it is not in `uncrossed` (every one where that is empty: a
+// result of nothing but untouched input triangles is not searched by parts).
+std::vector<char> trianglesNotIn(const Mesh& mesh, const TriangleSet& uncrossed) {
+    if (uncrossed.empty()) return {};
+    std::vector<char> suspect(mesh.triangleCount());
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        if (!crosses[t]) apart.add(TriangleSet::keyOf(mesh, t));
+        suspect[t] = !uncrossed.contains(TriangleSet::keyOf(mesh, t));
     }
-    apart.seal();
-    return apart;
+    return suspect;
+}
+
+// Per triangle of `mesh`: whether it is in one of the pairs `crossing` (all the crossing pairs
+// before the move) or has a corner that moved from `before`: the others crossed nothing and
+// still do not.
+std::vector<char> trianglesMovedOrCrossing(const Mesh& mesh, const std::vector<Vec3f>& before,
+                                           const std::vector<detail::TrianglePair>& crossing) {
+    std::vector<char> suspect(mesh.triangleCount(), 0);
+    for (const auto& [s, t] : crossing) suspect[s] = suspect[t] = 1;
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t v = mesh.indices[c];
+        if (mesh.positions[v] != before[v]) suspect[c / 3] = 1;
+    }
+    return suspect;
 }
 
 // Largest moves of a corner that separates a crossing pair or parts pinched sheets, as fractions
@@ -1228,16 +1238,17 @@ std::vector<std::uint32_t> pinchedSheetCorners(const Mesh& mesh, const Surfaces&
 void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& uncrossed,
                              SolidUnionReport& report) {
     const double extent = mesh.bounds().extent().maxCoeff();
-    std::vector<detail::TrianglePair> crossing = crossingPairs(mesh, surfaces, uncrossed);
+    std::vector<detail::TrianglePair> crossing =
+        crossingPairs(mesh, surfaces, trianglesNotIn(mesh, uncrossed));
     // Moves `surface` (crossingSurfaceOf(mesh, surfaces), moved by `repair`) into the mesh and
     // counts the crossings again, where they can have changed: at the triangles that moved or
     // crossed before.
     auto take = [&](const detail::CrossingSurface& surface, const detail::CrossingRepair& repair) {
         if (repair.movedVertices == 0) return;
-        const TriangleSet apart = trianglesApart(mesh, crossing);
+        const std::vector<Vec3f> before = mesh.positions;
         if (!takeMoves(mesh, surfaces, surface)) return;
         report.crossingMoves += repair.movedVertices;
-        crossing = crossingPairs(mesh, surfaces, apart);
+        crossing = crossingPairs(mesh, surfaces, trianglesMovedOrCrossing(mesh, before, crossing));
     };
     for (const double move : kSeparationMoves) {
         if (crossing.empty() && surfaces.pinchedEdges == 0) break;
