@@ -1143,16 +1143,18 @@ std::vector<char> trianglesNotIn(const Mesh& mesh, const TriangleSet& uncrossed)
     return suspect;
 }
 
-// Per triangle of `mesh`: whether it is in one of the pairs `crossing` (all the crossing pairs
-// before the move) or has a corner that moved from `before`: the others crossed nothing and
-// still do not.
-std::vector<char> trianglesMovedOrCrossing(const Mesh& mesh, const std::vector<Vec3f>& before,
+// Per triangle of `mesh`: whether it is in one of the pairs `crossing` (all its crossing pairs)
+// or has a corner that `surface` (crossingSurfaceOf(mesh, surfaces), moved) moves: the others
+// crossed nothing and will not while they stay.
+std::vector<char> trianglesMovedOrCrossing(const Mesh& mesh, const Surfaces& surfaces,
+                                           const detail::CrossingSurface& surface,
                                            const std::vector<detail::TrianglePair>& crossing) {
     std::vector<char> suspect(mesh.triangleCount(), 0);
     for (const auto& [s, t] : crossing) suspect[s] = suspect[t] = 1;
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
-        const std::uint32_t v = mesh.indices[c];
-        if (mesh.positions[v] != before[v]) suspect[c / 3] = 1;
+        if (surface.points[surfaces.fan[c]] != mesh.positions[mesh.indices[c]]) {
+            suspect[c / 3] = 1;
+        }
     }
     return suspect;
 }
@@ -1191,7 +1193,7 @@ detail::CrossingSurface crossingSurfaceOf(const Mesh& mesh, const Surfaces& surf
 // replaces `surfaces` by the new ones; a result that is no longer closed (a move joined two
 // positions) is not taken: false, both unchanged.
 bool takeMoves(Mesh& mesh, Surfaces& surfaces, const detail::CrossingSurface& surface) {
-    const std::vector<Vec3f> before = mesh.positions;
+    std::vector<Vec3f> before = mesh.positions;
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         mesh.positions[mesh.indices[c]] = surface.points[surfaces.fan[c]];
     }
@@ -1202,7 +1204,7 @@ bool takeMoves(Mesh& mesh, Surfaces& surfaces, const detail::CrossingSurface& su
     if (weld == surfaces.weld) return true;
     Surfaces moved = surfacesOf(std::move(weld), positions, mesh.indices);
     if (!moved.closed) {
-        mesh.positions = before;
+        mesh.positions = std::move(before);
         return false;
     }
     surfaces = std::move(moved);
@@ -1245,10 +1247,11 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& u
     // crossed before.
     auto take = [&](const detail::CrossingSurface& surface, const detail::CrossingRepair& repair) {
         if (repair.movedVertices == 0) return;
-        const std::vector<Vec3f> before = mesh.positions;
+        const std::vector<char> suspect =
+            trianglesMovedOrCrossing(mesh, surfaces, surface, crossing);
         if (!takeMoves(mesh, surfaces, surface)) return;
         report.crossingMoves += repair.movedVertices;
-        crossing = crossingPairs(mesh, surfaces, trianglesMovedOrCrossing(mesh, before, crossing));
+        crossing = crossingPairs(mesh, surfaces, suspect);
     };
     for (const double move : kSeparationMoves) {
         if (crossing.empty() && surfaces.pinchedEdges == 0) break;
