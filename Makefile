@@ -8,7 +8,7 @@ CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
 .PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load blender-import format \
-        format-check bench bench-peers fuzz fuzz-build fuzz-smoke batch-check union-check check-floats clean
+        format-check bench bench-peers fuzz fuzz-build fuzz-build-only fuzz-smoke batch-check union-check check-floats clean
 
 all: build
 
@@ -39,7 +39,17 @@ serve: deps
 # internal assertions on; the Khronos glTF validator over every GLB those tests wrote, the
 # same GLBs loaded and rendered by three.js and imported into Blender; a short run of each fuzzer; the studio page end to
 # end in headless Chromium. (Benchmarks measure speed separately: `make bench`.)
-test: deps format-check check-tests studio-e2e validate three-load blender-import fuzz-smoke
+# The fuzzers (a second, clang build of the libraries: about 2.5 minutes on 2 cores) compile
+# beside the rest at the lowest priority, in cycles the other checks leave idle (the browser and
+# Blender checks use about one core); their log is shown only when that build fails.
+FUZZ_BUILD_LOG := build/fuzz-build.log
+test: deps format-check
+	@mkdir -p build; \
+	  setsid scripts/run-idle.sh $(MAKE) --no-print-directory fuzz-build-only >$(FUZZ_BUILD_LOG) 2>&1 & fuzz=$$!; \
+	  trap 'kill -- -'$$fuzz' 2>/dev/null' EXIT INT TERM; \
+	  $(MAKE) --no-print-directory check-tests studio-e2e validate three-load blender-import || exit 1; \
+	  wait $$fuzz || { cat $(FUZZ_BUILD_LOG); echo "make test: the fuzz build failed"; exit 1; }
+	@FUZZ_JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ) $(FUZZ_SMOKE_SECS)
 	@echo "make test: all checks passed"
 	@node scripts/gtest-summary.mjs $(CHECK)/gtest-*.json
 
@@ -116,7 +126,10 @@ FUZZ      ?= build/fuzz
 FUZZ_SECS ?= 600
 # The smoke run replays every seed corpus (a few files a target) and fuzzes on for the rest.
 FUZZ_SMOKE_SECS ?= 10
-fuzz-build: deps
+fuzz-build: deps fuzz-build-only
+
+# The fuzz build without `deps` (make test runs it beside the other checks, after `deps`).
+fuzz-build-only:
 	@CXX=clang++ cmake -S . -B $(FUZZ) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" \
 	  -DRAMUS_BUILD_FUZZ=ON -DRAMUS_BUILD_TESTS=OFF -DRAMUS_BUILD_BENCH=OFF -DRAMUS_UNITY_BUILD=ON \
 	  -DRAMUS_WITH_CGAL=OFF >/dev/null

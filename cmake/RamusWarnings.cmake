@@ -5,8 +5,11 @@ function(ramus_set_warnings target)
                                             -Wno-sign-conversion -Werror=return-type)
 endfunction()
 
+# UBSan's vptr check (dynamic types behind casts and member calls) is left out: ramus has no
+# virtual functions, so it only instrumented the libraries' headers, for about a tenth of the
+# sanitized build's compile time (skeleton's largest unity file 42 → 38 s, 2026-12-05).
 if(RAMUS_SANITIZE)
-  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize=vptr -fno-omit-frame-pointer
                       -fno-sanitize-recover=undefined)
   add_link_options(-fsanitize=address,undefined)
 endif()
