@@ -8,7 +8,8 @@ CMAKE_GEN := -G Ninja
 RAMUS     := $(BUILD)/ramus
 
 .PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load blender-import format \
-        format-check bench bench-peers fuzz fuzz-build fuzz-build-only fuzz-smoke batch-check union-check check-floats clean
+        format-check bench bench-peers fuzz fuzz-build fuzz-build-only fuzz-smoke \
+        checks-and-fuzz-build fuzz-build-after-tests batch-check union-check check-floats clean
 
 all: build
 
@@ -39,19 +40,22 @@ serve: deps
 # internal assertions on; the Khronos glTF validator over every GLB those tests wrote, the
 # same GLBs loaded and rendered by three.js and imported into Blender; a short run of each fuzzer; the studio page end to
 # end in headless Chromium. (Benchmarks measure speed separately: `make bench`.)
-# The fuzzers (a second, clang build of the libraries: about 2.5 minutes on 2 cores) compile
-# beside the rest at the lowest priority, in cycles the other checks leave idle (the browser and
-# Blender checks use about one core); their log is shown only when that build fails.
-FUZZ_BUILD_LOG := build/fuzz-build.log
 test: deps format-check
-	@mkdir -p build; \
-	  setsid scripts/run-idle.sh $(MAKE) --no-print-directory fuzz-build-only >$(FUZZ_BUILD_LOG) 2>&1 & fuzz=$$!; \
-	  trap 'kill -- -'$$fuzz' 2>/dev/null' EXIT INT TERM; \
-	  $(MAKE) --no-print-directory check-tests studio-e2e validate three-load blender-import || exit 1; \
-	  wait $$fuzz || { cat $(FUZZ_BUILD_LOG); echo "make test: the fuzz build failed"; exit 1; }
+	@$(MAKE) --no-print-directory -j 2 checks-and-fuzz-build
 	@FUZZ_JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ) $(FUZZ_SMOKE_SECS)
 	@echo "make test: all checks passed"
 	@node scripts/gtest-summary.mjs $(CHECK)/gtest-*.json
+
+# After the sanitized build and its tests (both cores busy), the browser and Blender checks,
+# which use about one core, run beside the fuzzers' build (a second, clang build of the
+# libraries; its log is shown only when it fails). Started at the lowest priority from the
+# beginning instead, the fuzz build got almost no time until the browser checks and slowed the
+# tests (measured 2026-12-05, docs/BENCHMARKS.md).
+FUZZ_BUILD_LOG := build/fuzz-build.log
+checks-and-fuzz-build: studio-e2e validate three-load blender-import fuzz-build-after-tests
+fuzz-build-after-tests: check-tests
+	@mkdir -p build; $(MAKE) --no-print-directory fuzz-build-only >$(FUZZ_BUILD_LOG) 2>&1 || \
+	  { cat $(FUZZ_BUILD_LOG); echo "make test: the fuzz build failed"; exit 1; }
 
 # The heavy tests (tests/heavy-tests.txt) one per process, longest first, then the rest in twice
 # as many shards as cores, all taken from one queue, keep both cores busy to the end
