@@ -85,6 +85,8 @@ const VertexAttribute* findAttribute(const Mesh& mesh, std::string_view name);
 /// Appending a mesh without vertices changes no attribute. Joint indices are copied unchanged:
 /// both meshes must refer to the same Skin.
 void appendMesh(Mesh& mesh, const Mesh& other);
+/// The same, taking `other`'s arrays where `mesh` has none yet instead of copying them.
+void appendMesh(Mesh& mesh, Mesh&& other);
 
 /// Removes the vertices no triangle uses, keeping the others in order; every vertex array
 /// (normals, tangents, UVs, joints, weights, custom attributes) is compacted with them.
