@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace ramus {
 namespace {
 
@@ -81,6 +85,72 @@ TEST(AppendMesh, AppendingAnEmptyMeshChangesNothing) {
     // Custom attributes too (bark with wind data, then a tree without leaves).
     ASSERT_EQ(a.attributes.size(), 1u);
     EXPECT_EQ(a.attributes[0].values.size(), 12u);
+}
+
+// Every field of two meshes, compared one by one (Mesh has no operator==).
+void expectSameMesh(const Mesh& a, const Mesh& b, const std::string& label) {
+    SCOPED_TRACE(label);
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.normals, b.normals);
+    EXPECT_EQ(a.tangents, b.tangents);
+    EXPECT_EQ(a.uvs, b.uvs);
+    EXPECT_EQ(a.joints, b.joints);
+    EXPECT_EQ(a.weights, b.weights);
+    ASSERT_EQ(a.attributes.size(), b.attributes.size());
+    for (std::size_t i = 0; i < a.attributes.size(); ++i) {
+        EXPECT_EQ(a.attributes[i].name, b.attributes[i].name);
+        EXPECT_EQ(a.attributes[i].components, b.attributes[i].components);
+        EXPECT_EQ(a.attributes[i].values, b.attributes[i].values);
+    }
+    EXPECT_EQ(a.indices, b.indices);
+    ASSERT_EQ(a.primitives.size(), b.primitives.size());
+    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
+        EXPECT_EQ(a.primitives[i].firstIndex, b.primitives[i].firstIndex);
+        EXPECT_EQ(a.primitives[i].indexCount, b.primitives[i].indexCount);
+        EXPECT_EQ(a.primitives[i].material, b.primitives[i].material);
+        EXPECT_EQ(a.primitives[i].name, b.primitives[i].name);
+    }
+    ASSERT_EQ(a.materials.size(), b.materials.size());
+    for (std::size_t i = 0; i < a.materials.size(); ++i) {
+        EXPECT_TRUE(sameMaterial(a.materials[i], b.materials[i]));
+    }
+}
+
+// Appending a mesh that is dropped afterwards (Mesh&&: its arrays are taken where the target
+// has none) gives the same mesh as appending a copy, on every combination of an empty or drawn
+// target, with or without materials, attributes, custom attributes and skins.
+TEST(AppendMesh, TakingAMeshGivesTheSameAsCopyingIt) {
+    std::vector<std::pair<std::string, Mesh>> meshes;
+    meshes.emplace_back("empty", Mesh{});
+    meshes.emplace_back("plain", triangle(0, false));
+    meshes.emplace_back("attributes", triangle(1, true));
+    Mesh dressed = triangle(2, true);
+    dressed.name = "dressed";
+    dressed.materials.push_back(Material{"leaves"});
+    dressed.primitives.push_back(MeshPrimitive{0, 3, 0, "leaves"});
+    dressed.attributes.push_back(VertexAttribute{"_WIND", 2, std::vector<float>(6, 0.25f)});
+    dressed.joints.assign(3, {0, 1, 0, 0});
+    dressed.weights.assign(3, Vec4f(0.5f, 0.5f, 0, 0));
+    meshes.emplace_back("dressed", dressed);
+    Mesh positionsOnly;
+    positionsOnly.positions = {Vec3f(1, 2, 3)};
+    meshes.emplace_back("positions only", positionsOnly);
+    for (const auto& [targetName, target] : meshes) {
+        for (const auto& [otherName, other] : meshes) {
+            Mesh copied = target;
+            appendMesh(copied, other);
+            Mesh taken = target;
+            appendMesh(taken, Mesh(other));
+            expectSameMesh(taken, copied, otherName + " appended to " + targetName);
+        }
+    }
+    // The arrays are taken, not copied, where the target has none.
+    Mesh empty;
+    Mesh source = dressed;
+    const Vec3f* positions = source.positions.data();
+    appendMesh(empty, std::move(source));
+    EXPECT_EQ(empty.positions.data(), positions);
 }
 
 TEST(RemoveUnusedVertices, KeepsUsedVerticesInOrderWithAllTheirArrays) {
