@@ -16,6 +16,9 @@
 
 namespace ramus {
 
+/// The most attempts unionClosedSurfaces makes (each with other moves of the vertices).
+inline constexpr std::size_t kSolidUnionAttempts = 7;
+
 /// What unionClosedSurfaces did, for tests and --stats.
 struct SolidUnionReport {
     bool applied = false;              ///< the mesh was replaced by the union's surface
@@ -25,7 +28,7 @@ struct SolidUnionReport {
     std::size_t patches = 0;           ///< pieces of surface between the intersection curves
     std::size_t keptPatches = 0;       ///< of those, the ones on the union's boundary
     std::size_t newVertices = 0;       ///< positions on the intersection curves
-    std::size_t attempts = 0;          ///< tries with different moves (at most 5)
+    std::size_t attempts = 0;          ///< tries with different moves (at most 7)
     std::size_t cavitiesFilled = 0;    ///< enclosed pockets whose inner surface was removed
     std::size_t enclosedPieces = 0;    ///< pieces inside such pockets, removed with them
     /// separate pieces with < 1e-6 of the largest piece's volume (wedges the cut leaves where
@@ -65,15 +68,18 @@ struct SolidUnionReport {
 /// corners of crossing pairs are moved apart by a few float steps (at most 1e-5 of the extent,
 /// report->crossingMoves) where that lowers the crossings and turns no triangle over, and the
 /// corners of pinched sheets into their own solid where that adds no crossing, in up to three
-/// rounds while some are left (at most 1e-5, 3e-5, 1e-4 of the extent); up
-/// to five moves (1e-5, 3e-5, 1e-4, 2e-5, 6e-5) are tried and the first result without crossings
-/// and pinched edges, else the one with the fewest of both, is kept
-/// (report->remainingIntersections, report->pinchedEdges). On any failure (input not closed, a
+/// rounds while some are left (at most 1e-5, 3e-5, 1e-4 of the extent); up to `maxAttempts`
+/// (clamped to 1–kSolidUnionAttempts) moves are tried, small ones first and between the larger ones
+/// (1e-5, 5e-6, 3e-5, 1e-5, 5e-6, 2e-5, 1e-4 of the extent, each time other vertices' moves),
+/// and the first result without crossings and pinched edges, else the one with the fewest of
+/// both, is kept (report->remainingIntersections, report->pinchedEdges). Each attempt is a
+/// whole union; fewer trade a clean result for time. On any failure (input not closed, a
 /// degenerate configuration the refinement does not handle, no result that passes the check) the
 /// mesh is left as it was and the reason goes to report->failure. Deterministic. Returns
 /// report.applied.
 /// Throws Error (kSolidUnionMissing) in a build without CGAL (solidUnionAvailable() false).
-bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr);
+bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr,
+                         std::size_t maxAttempts = kSolidUnionAttempts);
 
 /// Whether this build has the solid union: CGAL's Polygon Mesh Processing is GPL-3.0-or-later,
 /// and a build configured with -DRAMUS_WITH_CGAL=OFF leaves it (and the GPL) out.

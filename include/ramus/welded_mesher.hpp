@@ -36,6 +36,10 @@ struct WeldedMeshParams {
     /// WeldReport::tubedForUnion); where that union is not clean (see
     /// WeldReport::convexForUnion) the hulls are.
     bool shrinkJunctions = true;
+    /// With solidUnion: the most attempts of each union (unionClosedSurfaces' maxAttempts,
+    /// clamped to 1–kSolidUnionAttempts): each is a whole union more where the last kept crossings
+    /// or pinched edges, so fewer trade a clean surface for time.
+    std::size_t unionAttempts = kSolidUnionAttempts;
 };
 
 /// What the welder did, for tests and --stats.

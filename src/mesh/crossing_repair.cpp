@@ -10,8 +10,13 @@
 #include <CGAL/intersections.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <limits>
+#include <unordered_map>
 
 namespace ramus::detail {
 namespace {
@@ -52,6 +57,7 @@ private:
     bool tryMoves(std::uint32_t v, std::size_t most);
     Vec3 vertexNormal(std::uint32_t v);
     void addDirection(const Vec3& d);
+    void addTowardsMiddle(std::uint32_t v);
 
     CrossingSurface& s_;
     double maxMove_;
@@ -193,31 +199,70 @@ bool Separator::separate(std::uint32_t v, std::uint32_t partner) {
     directions_.clear();
     addDirection(vertexNormal(v));
     addDirection(normal(partner));
+    addTowardsMiddle(v);
     const Vec3 p = s_.points[v].cast<double>();
-    Vec3 middle = Vec3::Zero();
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
-        for (std::uint32_t w : s_.triangles[around_[i]]) middle += s_.points[w].cast<double>();
-    }
-    addDirection(middle / (3.0 * (first_[v + 1] - first_[v])) - p);
     for (std::uint32_t w : s_.triangles[partner]) addDirection(p - s_.points[w].cast<double>());
     for (int axis = 0; axis < 3; ++axis) addDirection(Vec3::Unit(axis));
     return tryMoves(v, before - 1);
 }
 
+// Adds the direction from v towards the middle of its triangles' corners (which widens a
+// sliver), and its opposite.
+void Separator::addTowardsMiddle(std::uint32_t v) {
+    Vec3 middle = Vec3::Zero();
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+        for (std::uint32_t w : s_.triangles[around_[i]]) middle += s_.points[w].cast<double>();
+    }
+    addDirection(middle / (3.0 * (first_[v + 1] - first_[v])) - s_.points[v].cast<double>());
+}
+
 // A move of v, a corner of a sheet that rounding pinched to another along an edge, off that
-// position: into its own solid first (−normal), which opens a gap to the other sheet, then out;
-// no more crossings around v than before.
+// position: into its own solid first (−normal), which opens a gap to the other sheet, then out,
+// then towards the middle of its neighbours and along the axes (where a sliver beside v turns
+// over along the normal); no more crossings around v than before.
 bool Separator::unpinch(std::uint32_t v) {
     const std::size_t before = crossingsAround(v);
     directions_.clear();
     addDirection(-vertexNormal(v));
-    return !directions_.empty() && tryMoves(v, before);
+    addTowardsMiddle(v);
+    for (int axis = 0; axis < 3; ++axis) addDirection(Vec3::Unit(axis));
+    return tryMoves(v, before);
 }
 
+// Bit patterns of a position, as the solid union welds them.
+struct PositionKey {
+    std::array<std::uint32_t, 3> bits;
+    bool operator==(const PositionKey&) const = default;
+};
+
+PositionKey keyOf(const Vec3f& p) {
+    return {std::bit_cast<std::uint32_t>(p.x()), std::bit_cast<std::uint32_t>(p.y()),
+            std::bit_cast<std::uint32_t>(p.z())};
+}
+
+struct PositionKeyHash {
+    std::size_t operator()(const PositionKey& k) const {
+        return std::hash<std::uint64_t>{}((std::uint64_t{k.bits[0]} << 32 | k.bits[1]) ^
+                                          (std::uint64_t{k.bits[2]} * 0x9E3779B97F4A7C15ull));
+    }
+};
+
+// Moves the listed vertices in order, each only while another surface vertex still shares its
+// position: once one corner of a pinched pair has moved, its partner stays (a caller may list
+// both sheets' corners, the preferred sheet first, so that the other moves where a corner of the
+// first cannot).
 CrossingRepair Separator::unpinchAll(std::span<const std::uint32_t> vertices) {
+    std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> sharing;
+    for (std::uint32_t v : vertices) sharing.emplace(keyOf(s_.points[v]), 0);
+    for (const Vec3f& p : s_.points) {
+        if (auto it = sharing.find(keyOf(p)); it != sharing.end()) ++it->second;
+    }
     CrossingRepair repair;
     for (std::uint32_t v : vertices) {
-        if (movable(v) && unpinch(v)) ++repair.movedVertices;
+        std::uint32_t& shared = sharing.at(keyOf(original_[v]));
+        if (shared < 2 || s_.points[v] != original_[v] || !movable(v) || !unpinch(v)) continue;
+        --shared;
+        ++repair.movedVertices;
     }
     return repair;
 }

@@ -50,8 +50,12 @@ CrossingRepair separateCrossings(CrossingSurface& surface, std::span<const Trian
 
 /// Moves each of `vertices` (corners of sheets that rounding pinched to another sheet along an
 /// edge: the same positions, other surface vertices) a few float steps off that position, into
-/// its own solid first, at most `maxMove`, where that adds no crossing around it and turns no
-/// triangle over. CrossingRepair::pairsLeft stays 0. Deterministic.
+/// its own solid first, then out, towards the middle of its neighbours or along an axis, at most
+/// `maxMove`, where that adds no crossing around it and turns no triangle over. They are taken in
+/// order, and a vertex whose position no other surface vertex shares any more (its partner moved
+/// first) stays: listing both sheets' corners, the preferred sheet's first, parts them where the
+/// preferred corners are fixed or cannot move. CrossingRepair::pairsLeft stays 0.
+/// Deterministic.
 CrossingRepair unpinchVertices(CrossingSurface& surface, std::span<const std::uint32_t> vertices,
                                double maxMove);
 

@@ -31,9 +31,9 @@
 //    are moved a few float steps apart, where that lowers the crossings and turns no triangle
 //    over, and then one sheet's corners at a pinched edge into its own solid, where that adds
 //    no crossing (crossing_repair.hpp); up to three rounds, each allowed larger moves.
-// 7. Rounding can also break the check: up to five moves are tried, and the first result
-//    without crossings or pinched edges, else the one with the fewest of both, replaces the
-//    mesh.
+// 7. Rounding can also break the check: up to seven moves are tried (kUnionMoves), and the
+//    first result without crossings or pinched edges, else the one with the fewest of both,
+//    replaces the mesh.
 #include "ramus/solid_union.hpp"
 
 #include "ramus/error.hpp"
@@ -56,9 +56,11 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <thread>
 #include <unordered_map>
 #include <vector>
@@ -1211,25 +1213,32 @@ bool takeMoves(Mesh& mesh, Surfaces& surfaces, const detail::CrossingSurface& su
     return true;
 }
 
-// Surface vertices at pinched edges (closed `surfaces`): at each edge where k > 1 sheets meet,
-// the two corners of every sheet but the first.
+// Surface vertices at pinched edges (closed `surfaces`), in the order unpinchVertices tries
+// them: at each edge where k > 1 sheets meet, the two corners of every sheet but the first, then
+// the first sheet's (which move where a corner of the others cannot: session 28, ABOP 1.24b's
+// only pinched edge had a corner shared with a third surface vertex, which stays, and the other
+// turned a sliver over).
 std::vector<std::uint32_t> pinchedSheetCorners(const Mesh& mesh, const Surfaces& surfaces) {
     const DirectedEdges table(surfaces.weld, surfaces.positions, mesh.indices);
     const std::vector<DirectedEdge>& edges = table.all();
     std::vector<std::uint32_t> vertices;
+    std::vector<char> listed(surfaces.vertices, 0);
+    auto list = [&](std::uint32_t corner) {
+        for (const std::uint32_t c : {corner, nextCorner(corner)}) {
+            const std::uint32_t v = surfaces.fan[c];
+            if (!listed[v]) vertices.push_back(v);
+            listed[v] = 1;
+        }
+    };
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
         while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
         if (j - i > 1 && edges[i].welded < reversed(edges[i].welded)) {
-            for (std::size_t k = i + 1; k < j; ++k) {
-                vertices.push_back(surfaces.fan[edges[k].corner]);
-                vertices.push_back(surfaces.fan[nextCorner(edges[k].corner)]);
-            }
+            for (std::size_t k = i + 1; k < j; ++k) list(edges[k].corner);
+            list(edges[i].corner);
         }
         i = j;
     }
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
     return vertices;
 }
 
@@ -1270,6 +1279,28 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& u
     report.pinchedEdges = surfaces.pinchedEdges;
 }
 
+// The moves of the attempts (step 7), in order: the largest move of a surface vertex as a
+// fraction of the mesh's extent, and the salt of its hash. Every entry keeps its own salt, so
+// an entry moves the same vertices the same way wherever it stands in the list. Measured in
+// session 28 (make union-check, Release; docs/welded.md, Solid union, step 7): a larger move
+// separates grazing surfaces of dense plants better (ABOP 1.24a and 1.24b: 1e-5 left 1 crossing
+// or pinched edge, 3e-5 nothing), but on a flat plant it tilts its coplanar faces through more
+// of each other: on ABOP 2.8c 1e-5, 3e-5, 1e-4 cut the surface into 240 k, 365 k and 1.03 M
+// triangles in 4 s, 60 s and minutes, leaving 3, 46 and 194 defects, while 5e-6 left none for
+// 4 of 8 salts. So small moves come first and between the larger ones. With the order of
+// sessions 25–27 (1e-5, 3e-5, 1e-4, 2e-5, 6e-5, salts 0x51ED·attempt) every attempt of 2.8c
+// kept defects and its hulls were united after 5 min 23 s; with this one its second attempt
+// is clean (5 s in all), 1.24a its third, 1.24c its fourth, the other 39 examples their first
+// (1.24b since the first sheet's corners of a pinched edge may move too, pinchedSheetCorners).
+struct UnionMove {
+    double jitter;
+    std::uint64_t salt;
+};
+constexpr UnionMove kUnionMoves[] = {{1e-5, 0x51ED},     {5e-6, 3 * 0x51ED}, {3e-5, 2 * 0x51ED},
+                                     {1e-5, 4 * 0x51ED}, {5e-6, 5 * 0x51ED}, {2e-5, 6 * 0x51ED},
+                                     {1e-4, 7 * 0x51ED}};
+static_assert(std::size(kUnionMoves) == kSolidUnionAttempts);
+
 // What makes a result less than one clean 2-manifold: crossing triangle pairs and pinched edges.
 std::size_t defects(const SolidUnionReport& report) {
     return report.remainingIntersections + report.pinchedEdges;
@@ -1277,7 +1308,7 @@ std::size_t defects(const SolidUnionReport& report) {
 
 }  // namespace
 
-bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
+bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAttempts) {
     SolidUnionReport local;
     SolidUnionReport& r = report != nullptr ? *report : local;
     r = SolidUnionReport{};
@@ -1287,11 +1318,9 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
         return false;
     }
     // Rounding the cut positions to float can join a piece's corners with a neighbour's, or
-    // make surfaces that graze each other cross, differently for every move: up to five moves
-    // are tried, and the first clean result or else the one with the fewest crossings is kept.
-    // The last two came in session 25, when the moved positions became floats in Release too
-    // (CMakeLists.txt) and ABOP 1.24c kept 2 crossing pairs after the first three (its fourth
-    // or fifth is clean).
+    // make surfaces that graze each other cross, differently for every move: the moves of
+    // kUnionMoves are tried in turn, and the first clean result or else the one with the fewest
+    // crossings is kept.
     const Surfaces input = surfacesOf(mesh);
     r.inputComponents = countComponents(input.weld, input.positions, mesh.indices);
     if (!input.closed) {
@@ -1300,14 +1329,15 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
     }
     std::optional<Mesh> best;
     SolidUnionReport bestReport;
-    for (const double jitter : {1e-5, 3e-5, 1e-4, 2e-5, 6e-5}) {
+    const std::size_t attempts = std::clamp<std::size_t>(maxAttempts, 1, std::size(kUnionMoves));
+    for (const UnionMove& move : std::span(kUnionMoves, attempts)) {
         ++r.attempts;
         SolidUnionReport attempt;  // each attempt counts its own patches, pockets and slivers
         attempt.inputComponents = r.inputComponents;
         Mesh trial = mesh;
         TriangleSet uncrossed;
         const Outcome outcome =
-            unionAttempt(trial, input, attempt, jitter, 0x51ED * r.attempts, uncrossed);
+            unionAttempt(trial, input, attempt, move.jitter, move.salt, uncrossed);
         r.failure = attempt.failure;
         if (outcome == Outcome::badInput) return false;
         if (outcome != Outcome::done) continue;
@@ -1319,9 +1349,9 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
         if (defects(attempt) == 0) break;
     }
     if (!best) return false;
-    const std::size_t attempts = r.attempts;
+    const std::size_t made = r.attempts;
     r = bestReport;
-    r.attempts = attempts;
+    r.attempts = made;
     r.applied = true;
     r.failure.clear();
     mesh = std::move(*best);
@@ -1334,7 +1364,8 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report) {
 
 namespace ramus {
 
-bool unionClosedSurfaces(Mesh& /*mesh*/, SolidUnionReport* /*report*/) {
+bool unionClosedSurfaces(Mesh& /*mesh*/, SolidUnionReport* /*report*/,
+                         std::size_t /*maxAttempts*/) {
     throw Error(std::string(kSolidUnionMissing));
 }
 

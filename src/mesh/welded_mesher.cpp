@@ -452,17 +452,18 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
     WeldReport weld;
     Mesh mesh = detail::WeldBuilder(tree, params).build(&weld);
     if (params.solidUnion) {
-        unionClosedSurfaces(mesh, &weld.solidUnion);
+        unionClosedSurfaces(mesh, &weld.solidUnion, params.unionAttempts);
         // Shrunk junctions hug neighbouring branches within hundredths of a radius; where the
-        // union's cut, rounded to float, leaves such grazes crossing or pinched (make
-        // union-check, session 24: ABOP 1.24a and 2.8c), the convex hulls, which keep their
-        // distance, may unite cleanly. The better union is kept, the shrunk one on a tie.
+        // union's cut, rounded to float, leaves such grazes crossing or pinched after every
+        // attempt (make union-check, sessions 24–27: ABOP 1.24a and 2.8c; none since session
+        // 28's order of moves), the convex hulls, which keep their distance, may unite cleanly. The
+        // better union is kept, the shrunk one on a tie.
         if (params.shrinkJunctions && unionDefects(weld.solidUnion) > 0) {
             WeldedMeshParams hulls = params;
             hulls.shrinkJunctions = false;
             WeldReport convexWeld;
             Mesh convex = detail::WeldBuilder(tree, hulls).build(&convexWeld);
-            unionClosedSurfaces(convex, &convexWeld.solidUnion);
+            unionClosedSurfaces(convex, &convexWeld.solidUnion, params.unionAttempts);
             if (unionDefects(convexWeld.solidUnion) < unionDefects(weld.solidUnion)) {
                 mesh = std::move(convex);
                 weld = std::move(convexWeld);

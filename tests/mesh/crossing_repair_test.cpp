@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <vector>
 
 #include "ramus/rng.hpp"
 #include "welded_checks.hpp"
@@ -135,37 +137,78 @@ TEST(CrossingRepair, FixedVerticesStay) {
     EXPECT_EQ(largestMove(start, s), 0.0);
 }
 
-// Two unit cubes sharing an edge exactly, each with its own corners there (a pinched edge, as
-// rounding leaves where two sheets touch): the second cube's two corners on the edge move a few
-// float steps into their own cube, so the cubes no longer share a position; nothing crosses.
-TEST(CrossingRepair, PinchedCornersMoveIntoTheirOwnSolid) {
-    detail::CrossingSurface start = cubeAndTetrahedron(3.0f);  // the cube, and a far tetrahedron
-    const auto base = static_cast<std::uint32_t>(start.points.size());
-    for (int i = 0; i < 8; ++i) {  // the cube [1, 2] x [1, 2] x [0, 1]
-        start.points.emplace_back(static_cast<float>(1 + (i & 1)),
-                                  static_cast<float>(1 + ((i >> 1) & 1)),
-                                  static_cast<float>((i >> 2) & 1));
+// The unit cube of cubeAndTetrahedron (and its far tetrahedron) and a second unit cube
+// [1, 2] x [1, 2] x [0, 1] with its own corners, from index `base` on: the cubes share an edge
+// exactly, a pinched edge as rounding leaves where two sheets touch. Corners base + 0 (1, 1, 0)
+// and base + 4 (1, 1, 1) of the second cube are at corners 3 and 7 of the first.
+detail::CrossingSurface cubesPinchedAlongAnEdge(std::uint32_t* base) {
+    detail::CrossingSurface s = cubeAndTetrahedron(3.0f);  // the tetrahedron far away
+    *base = static_cast<std::uint32_t>(s.points.size());
+    for (int i = 0; i < 8; ++i) {
+        s.points.emplace_back(static_cast<float>(1 + (i & 1)),
+                              static_cast<float>(1 + ((i >> 1) & 1)),
+                              static_cast<float>((i >> 2) & 1));
     }
     for (std::size_t t = 0; t < 12; ++t) {
-        const auto& c = start.triangles[t];
-        start.triangles.push_back({base + c[0], base + c[1], base + c[2]});
+        const auto& c = s.triangles[t];
+        s.triangles.push_back({*base + c[0], *base + c[1], *base + c[2]});
     }
-    // Corners 0 (1, 1, 0) and 4 (1, 1, 1) of the second cube are corners 3 and 7 of the first.
+    return s;
+}
+
+// After unpinchVertices on cubesPinchedAlongAnEdge: the `moved` corners went a few float steps
+// into their own cube (towards `inside`, per axis +1 or −1), every other vertex stayed, and
+// nothing crosses.
+void expectPartedInto(const detail::CrossingSurface& start, const detail::CrossingSurface& s,
+                      const std::vector<std::uint32_t>& moved, const Vec3f& inside) {
+    const float ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
+    for (std::uint32_t v = 0; v < s.points.size(); ++v) {
+        SCOPED_TRACE(v);
+        if (std::find(moved.begin(), moved.end(), v) == moved.end()) {
+            EXPECT_EQ(s.points[v], start.points[v]);
+            continue;
+        }
+        EXPECT_NE(s.points[v], start.points[v]);
+        EXPECT_LE((s.points[v] - start.points[v]).cast<double>().norm(), 8.0 * ulp);
+        EXPECT_GT((s.points[v].x() - start.points[v].x()) * inside.x(), 0.0f);
+        EXPECT_GT((s.points[v].y() - start.points[v].y()) * inside.y(), 0.0f);
+    }
+    EXPECT_EQ(test::countSelfIntersections(meshOf(s), 100), 0u);
+    EXPECT_TRUE(test::analyzeTopology(meshOf(s)).closedOriented);
+}
+
+// The second cube's two corners on the shared edge move a few float steps into their own cube,
+// so the cubes no longer share a position; nothing crosses.
+TEST(CrossingRepair, PinchedCornersMoveIntoTheirOwnSolid) {
+    std::uint32_t base = 0;
+    const detail::CrossingSurface start = cubesPinchedAlongAnEdge(&base);
     const std::vector<std::uint32_t> pinched = {base + 0, base + 4};
     ASSERT_EQ(start.points[base + 0], start.points[3]);
     detail::CrossingSurface s = start;
     const detail::CrossingRepair repair = detail::unpinchVertices(s, pinched, kMaxMove);
     EXPECT_EQ(repair.movedVertices, 2u);
-    const float ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
-    for (std::uint32_t v : pinched) {
-        EXPECT_NE(s.points[v], start.points[v]);
-        EXPECT_LE((s.points[v] - start.points[v]).cast<double>().norm(), 8.0 * ulp);
-        EXPECT_GT(s.points[v].x(), 1.0f);  // into the second cube
-        EXPECT_GT(s.points[v].y(), 1.0f);
+    expectPartedInto(start, s, pinched, Vec3f(1, 1, 0));
+}
+
+// With both sheets' corners listed, the first listed that can move do, and their partners, no
+// longer sharing a position, stay: the second cube's corners where they may move, the first
+// cube's where the second's are fixed (session 28: a pinched edge of ABOP 1.24b whose preferred
+// corner was shared with a third surface vertex).
+TEST(CrossingRepair, PinchedEdgesPartByTheOtherSheetWhereTheFirstCannotMove) {
+    std::uint32_t base = 0;
+    const detail::CrossingSurface start = cubesPinchedAlongAnEdge(&base);
+    const std::vector<std::uint32_t> both = {base + 0, base + 4, 3, 7};
+    {
+        detail::CrossingSurface s = start;
+        EXPECT_EQ(detail::unpinchVertices(s, both, kMaxMove).movedVertices, 2u);
+        expectPartedInto(start, s, {base + 0, base + 4}, Vec3f(1, 1, 0));
     }
-    for (std::uint32_t v = 0; v < base; ++v) EXPECT_EQ(s.points[v], start.points[v]);
-    EXPECT_EQ(test::countSelfIntersections(meshOf(s), 100), 0u);
-    EXPECT_TRUE(test::analyzeTopology(meshOf(s)).closedOriented);
+    detail::CrossingSurface s = start;
+    s.fixed.assign(s.points.size(), 0);
+    s.fixed[base + 0] = s.fixed[base + 4] = 1;
+    EXPECT_EQ(detail::unpinchVertices(s, both, kMaxMove).movedVertices, 2u);
+    s.fixed.clear();
+    expectPartedInto(start, s, {3, 7}, Vec3f(-1, -1, 0));
 }
 
 }  // namespace
