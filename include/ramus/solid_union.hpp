@@ -29,8 +29,11 @@ struct SolidUnionReport {
     std::size_t keptPatches = 0;       ///< of those, the ones on the union's boundary
     std::size_t newVertices = 0;       ///< positions on the intersection curves
     std::size_t attempts = 0;          ///< tries with different moves (at most 7)
-    std::size_t cavitiesFilled = 0;    ///< enclosed pockets whose inner surface was removed
-    std::size_t enclosedPieces = 0;    ///< pieces inside such pockets, removed with them
+    /// Moves that made more than 1.5 times the triangles intersect that the first attempt's
+    /// did, so their attempts came after the others' (where those left defects).
+    std::size_t postponedMoves = 0;
+    std::size_t cavitiesFilled = 0;  ///< enclosed pockets whose inner surface was removed
+    std::size_t enclosedPieces = 0;  ///< pieces inside such pockets, removed with them
     /// separate pieces with < 1e-6 of the largest piece's volume (wedges the cut leaves where
     /// surfaces graze), removed
     std::size_t sliversRemoved = 0;
@@ -69,15 +72,16 @@ struct SolidUnionReport {
 /// report->crossingMoves) where that lowers the crossings and turns no triangle over, and the
 /// corners of pinched sheets into their own solid where that adds no crossing, in up to three
 /// rounds while some are left (at most 1e-5, 3e-5, 1e-4 of the extent); up to `maxAttempts`
-/// (clamped to 1–kSolidUnionAttempts) moves are tried, small ones first and between the larger ones
-/// (1e-5, 5e-6, 3e-5, 1e-5, 5e-6, 2e-5, 1e-4 of the extent, each time other vertices' moves),
-/// and the first result without crossings and pinched edges, else the one with the fewest of
-/// both, is kept (report->remainingIntersections, report->pinchedEdges). Each attempt is a
-/// whole union; fewer trade a clean result for time. On any failure (input not closed, a
-/// degenerate configuration the refinement does not handle, no result that passes the check) the
-/// mesh is left as it was and the reason goes to report->failure. Deterministic. Returns
-/// report.applied.
-/// Throws Error (kSolidUnionMissing) in a build without CGAL (solidUnionAvailable() false).
+/// (clamped to 1–kSolidUnionAttempts) moves are tried, larger and smaller ones in turn (1e-5,
+/// 3e-5, 5e-6, 1e-5, 5e-6, 2e-5, 1e-4 of the extent, each time other vertices' moves; a move
+/// that makes more than 1.5 times the triangles intersect that the first did is tried last,
+/// report->postponedMoves), and the first result without crossings and pinched edges, else
+/// the one with the fewest of both, is kept (report->remainingIntersections,
+/// report->pinchedEdges). Each attempt is a whole union; fewer trade a clean result for time. On
+/// any failure (input not closed, a degenerate configuration the refinement does not handle, no
+/// result that passes the check) the mesh is left as it was and the reason goes to report->failure.
+/// Deterministic. Returns report.applied. Throws Error (kSolidUnionMissing) in a build without CGAL
+/// (solidUnionAvailable() false).
 bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr,
                          std::size_t maxAttempts = kSolidUnionAttempts);
 

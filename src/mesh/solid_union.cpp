@@ -878,7 +878,8 @@ Surfaces surfacesOf(const Mesh& mesh) {
     return surfacesOf(std::move(weld), positions, mesh.indices);
 }
 
-enum class Outcome { done, badInput, retry };
+// postponed: the move made more triangles intersect than allowed (unionAttempt's cutLimit).
+enum class Outcome { done, badInput, retry, postponed };
 
 Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
     report.failure = why;
@@ -887,9 +888,12 @@ Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
 
 // One attempt on the closed surfaces `input` of `mesh` with the positions moved by up to
 // `jitter` (fraction of the mesh's extent) with hash salt `salt`. `uncrossed` gets the moved
-// input triangles that intersected nothing, where the union cut anything.
+// input triangles that intersected nothing, where the union cut anything. `cut` gets the number
+// of input triangles that intersect others after the move; where that is more than `cutLimit`,
+// nothing more is done (Outcome::postponed).
 Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report, double jitter,
-                     std::uint64_t salt, TriangleSet& uncrossed) {
+                     std::uint64_t salt, std::size_t cutLimit, std::size_t& cut,
+                     TriangleSet& uncrossed) {
     const std::vector<std::uint32_t>& fan = input.fan;
     const std::uint32_t vertices = input.vertices;
 
@@ -932,7 +936,9 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
 
     // 2. Cut the triangles along their intersections.
     const std::vector<char> intersecting = intersectingFaces(m);
-    if (std::find(intersecting.begin(), intersecting.end(), 1) == intersecting.end()) {
+    cut = static_cast<std::size_t>(std::count(intersecting.begin(), intersecting.end(), 1));
+    if (cut > cutLimit) return Outcome::postponed;
+    if (cut == 0) {
         report.outputComponents = report.inputComponents;  // nothing intersects: keep the input
         report.patches = report.keptPatches = report.outputComponents;
         return Outcome::done;
@@ -1283,23 +1289,34 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& u
 // fraction of the mesh's extent, and the salt of its hash. Every entry keeps its own salt, so
 // an entry moves the same vertices the same way wherever it stands in the list. Measured in
 // session 28 (make union-check, Release; docs/welded.md, Solid union, step 7): a larger move
-// separates grazing surfaces of dense plants better (ABOP 1.24a and 1.24b: 1e-5 left 1 crossing
-// or pinched edge, 3e-5 nothing), but on a flat plant it tilts its coplanar faces through more
-// of each other: on ABOP 2.8c 1e-5, 3e-5, 1e-4 cut the surface into 240 k, 365 k and 1.03 M
-// triangles in 4 s, 60 s and minutes, leaving 3, 46 and 194 defects, while 5e-6 left none for
-// 4 of 8 salts. So small moves come first and between the larger ones. With the order of
-// sessions 25–27 (1e-5, 3e-5, 1e-4, 2e-5, 6e-5, salts 0x51ED·attempt) every attempt of 2.8c
-// kept defects and its hulls were united after 5 min 23 s; with this one its second attempt
-// is clean (5 s in all), 1.24a its third, 1.24c its fourth, the other 39 examples their first
-// (1.24b since the first sheet's corners of a pinched edge may move too, pinchedSheetCorners).
+// separates grazing surfaces of dense plants better (ABOP 1.24a: 1e-5 left a crossing pair,
+// 3e-5 nothing), but on a flat plant it tilts its coplanar faces through more of each other:
+// on ABOP 2.8c 1e-5, 3e-5, 1e-4 cut the surface into 240 k, 365 k and 1.03 M triangles in 4 s,
+// 60 s and minutes, leaving 3, 46 and 194 defects, while 5e-6 left none for 4 of 8 salts. With
+// the order of sessions 25–27 (1e-5, 3e-5, 1e-4, 2e-5, 6e-5, salts 0x51ED·attempt) every
+// attempt of 2.8c kept defects and its hulls were united after 5 min 23 s. So larger and
+// smaller moves take turns, and how many triangles a move makes intersect tells the two kinds
+// of plant apart before the cut (postponedAbove): on 1.24a and 1.24c 1e-5, 5e-6 and 3e-5 made
+// 38.5 k, 38.5 k, 38.7 k of 74.6 k and 37.8 k, 37.8 k, 38.2 k of 63.1 k triangles intersect, on
+// 2.8c 1e-5 and 5e-6 4 726 and 992 of 234 k. With this order and larger cuts put off, 2.8c is
+// clean at its second attempt (5.8 s in all), 1.24a at its second, 1.24c its fourth, the other
+// 39 examples at their first (1.24b since the first sheet's corners of a pinched edge may move
+// too, pinchedSheetCorners).
 struct UnionMove {
     double jitter;
     std::uint64_t salt;
 };
-constexpr UnionMove kUnionMoves[] = {{1e-5, 0x51ED},     {5e-6, 3 * 0x51ED}, {3e-5, 2 * 0x51ED},
+constexpr UnionMove kUnionMoves[] = {{1e-5, 0x51ED},     {3e-5, 2 * 0x51ED}, {5e-6, 3 * 0x51ED},
                                      {1e-5, 4 * 0x51ED}, {5e-6, 5 * 0x51ED}, {2e-5, 6 * 0x51ED},
                                      {1e-4, 7 * 0x51ED}};
 static_assert(std::size(kUnionMoves) == kSolidUnionAttempts);
+
+// A move that makes more triangles intersect than this, for `firstCut` after the first
+// attempt's move (1.5 times), is tried only after the others (SolidUnionReport::postponedMoves):
+// on a flat plant the cut grows with the move (kUnionMoves), and with it the time, while on
+// dense plants the moves differ by under 1 %. Finding the intersecting triangles costs a tenth
+// to a hundredth of the cut.
+std::size_t postponedAbove(std::size_t firstCut) { return firstCut + firstCut / 2; }
 
 // What makes a result less than one clean 2-manifold: crossing triangle pairs and pinched edges.
 std::size_t defects(const SolidUnionReport& report) {
@@ -1329,29 +1346,52 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
     }
     std::optional<Mesh> best;
     SolidUnionReport bestReport;
-    const std::size_t attempts = std::clamp<std::size_t>(maxAttempts, 1, std::size(kUnionMoves));
-    for (const UnionMove& move : std::span(kUnionMoves, attempts)) {
-        ++r.attempts;
-        SolidUnionReport attempt;  // each attempt counts its own patches, pockets and slivers
-        attempt.inputComponents = r.inputComponents;
+    std::size_t firstCut = 0;  // input triangles that intersect after the first attempt's move
+    std::vector<UnionMove> postponed;
+    // One attempt with `move`, unless it makes more than `cutLimit` triangles intersect
+    // (postponed); keeps the result if it is the best so far.
+    auto attempt = [&](const UnionMove& move, std::size_t cutLimit) {
+        SolidUnionReport tried;  // each attempt counts its own patches, pockets and slivers
+        tried.inputComponents = r.inputComponents;
         Mesh trial = mesh;
         TriangleSet uncrossed;
+        std::size_t cut = 0;
         const Outcome outcome =
-            unionAttempt(trial, input, attempt, move.jitter, move.salt, uncrossed);
-        r.failure = attempt.failure;
-        if (outcome == Outcome::badInput) return false;
-        if (outcome != Outcome::done) continue;
-        separateRoundingDefects(trial, surfacesOf(trial), uncrossed, attempt);
-        if (!best || defects(attempt) < defects(bestReport)) {
-            best = std::move(trial);
-            bestReport = attempt;
+            unionAttempt(trial, input, tried, move.jitter, move.salt, cutLimit, cut, uncrossed);
+        if (outcome == Outcome::postponed) {
+            postponed.push_back(move);
+            return outcome;
         }
-        if (defects(attempt) == 0) break;
+        if (++r.attempts == 1) firstCut = cut;
+        r.failure = tried.failure;
+        if (outcome != Outcome::done) return outcome;
+        separateRoundingDefects(trial, surfacesOf(trial), uncrossed, tried);
+        if (!best || defects(tried) < defects(bestReport)) {
+            best = std::move(trial);
+            bestReport = tried;
+        }
+        return outcome;
+    };
+    auto clean = [&] { return best && defects(bestReport) == 0; };
+    const std::size_t moves = std::clamp<std::size_t>(maxAttempts, 1, std::size(kUnionMoves));
+    for (const UnionMove& move : std::span(kUnionMoves, moves)) {
+        const std::size_t cutLimit =
+            r.attempts == 0 ? std::numeric_limits<std::size_t>::max() : postponedAbove(firstCut);
+        if (attempt(move, cutLimit) == Outcome::badInput) return false;
+        if (clean()) break;
+    }
+    const std::size_t postponedMoves = postponed.size();
+    for (const UnionMove& move : std::vector<UnionMove>(std::move(postponed))) {
+        if (clean()) break;
+        if (attempt(move, std::numeric_limits<std::size_t>::max()) == Outcome::badInput) {
+            return false;
+        }
     }
     if (!best) return false;
     const std::size_t made = r.attempts;
     r = bestReport;
     r.attempts = made;
+    r.postponedMoves = postponedMoves;
     r.applied = true;
     r.failure.clear();
     mesh = std::move(*best);

@@ -73,9 +73,11 @@ bool expectOneCleanSurface(const std::string& name, const BranchTree& tree, Weld
     EXPECT_EQ(top.components, 1u);
     EXPECT_GT(test::signedVolume(mesh), 0.0);
     if (attempts != nullptr) *attempts += u.attempts;
-    std::printf("%s: %zu triangles, %zu attempts, %zu crossing moves, %s junctions, %zu tubed\n",
-                name.c_str(), mesh.triangleCount(), u.attempts, u.crossingMoves,
-                report.convexForUnion ? "convex" : "shrunk", report.tubedForUnion);
+    std::printf(
+        "%s: %zu triangles, %zu attempts (%zu moves postponed), %zu crossing moves, %s junctions, "
+        "%zu tubed\n",
+        name.c_str(), mesh.triangleCount(), u.attempts, u.postponedMoves, u.crossingMoves,
+        report.convexForUnion ? "convex" : "shrunk", report.tubedForUnion);
     test::expectSilhouetteWithinBounds(
         test::compareSilhouettes(tree, params.tube, mesh, "union_" + name),
         test::silhouetteBounds(name, true));
@@ -111,8 +113,8 @@ TEST(SolidUnion, DenseWeldedPlantsBecomeOneSurface) {
 // tolerances (webbed junctions are tubes, shrunk or convex). Every attempt after the first is a
 // whole union more: since session 28's order of moves (solid_union.cpp, kUnionMoves) 2.8c needs
 // 2 and unites its shrunk junctions (all 5 attempts before kept defects: 5 min 23 s, then its
-// hulls), 1.24a 3 (2 before), 1.24c 4, the other 39 one (1.24b 2 before, until pinched edges
-// could part by the first sheet's corners; Release build: 3 min 10 s for all 42, 13 min before).
+// hulls), 1.24a 2, 1.24c 4, the other 39 one (1.24b 2 before, until pinched edges could part
+// by the first sheet's corners; Release build: about 3 minutes for all 42, 13 min before).
 TEST(SolidUnion, EveryExampleIsOneCleanSurface) {
     if (std::getenv("RAMUS_LARGE_TESTS") == nullptr) {
         GTEST_SKIP() << "set RAMUS_LARGE_TESTS=1 (make union-check)";
@@ -129,7 +131,7 @@ TEST(SolidUnion, EveryExampleIsOneCleanSurface) {
             ++unions;
         });
     EXPECT_LE(convex, 1u);
-    EXPECT_LE(attempts - unions, 6u);
+    EXPECT_LE(attempts - unions, 5u);
 }
 
 // The union of shrunk junctions, which hug neighbouring branches within hundredths of a radius,
@@ -152,6 +154,28 @@ TEST(SolidUnion, ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls) {
     EXPECT_TRUE(expectOneCleanSurface("abop_2_8c_one_attempt", growExample("abop_2_8c", -1),
                                       oneAttempt, &attempts));
     EXPECT_EQ(attempts, 1u);
+}
+
+// ABOP 2.8c, a flat plant: a larger move tilts its coplanar faces through more of each other
+// (solid_union.cpp, kUnionMoves). Its first attempt (1e-5) keeps defects; the second move
+// (3e-5) makes more than 1.5 times the first's triangles intersect and is put off, and the third
+// (5e-6) unites its shrunk junctions cleanly: 2 attempts, about 6 s in the Release build (the
+// 3e-5 attempt alone took a minute), so with make union-check.
+TEST(SolidUnion, FlatPlantsTryTheMovesThatCutLessFirst) {
+    if (std::getenv("RAMUS_LARGE_TESTS") == nullptr) {
+        GTEST_SKIP() << "set RAMUS_LARGE_TESTS=1 (make union-check)";
+    }
+    WeldedMeshParams params;
+    params.solidUnion = true;
+    WeldReport report;
+    const Mesh mesh = buildWeldedTreeMesh(growExample("abop_2_8c", -1), params, &report);
+    const SolidUnionReport& u = report.solidUnion;
+    EXPECT_TRUE(u.applied) << u.failure;
+    EXPECT_FALSE(report.convexForUnion);
+    EXPECT_EQ(u.attempts, 2u);
+    EXPECT_EQ(u.postponedMoves, 1u);
+    EXPECT_EQ(u.remainingIntersections + u.pinchedEdges, 0u);
+    EXPECT_TRUE(test::analyzeTopology(mesh).closedOriented);
 }
 
 // An axis-aligned box [lo, hi] as 12 outward triangles (without shared corners between boxes).
