@@ -65,6 +65,9 @@ struct TreeMeshReport {
     /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges and
     /// ::crossingMoves.
     std::size_t crossingsLeft = 0, pinchedEdges = 0, crossingMoves = 0;
+    /// Over the united meshes: SolidUnionReport::attempts (each a whole union) and
+    /// ::postponedMoves.
+    std::size_t unionAttempts = 0, postponedMoves = 0;
 };
 
 /// The full-detail mesh "tree" of all `trees`: tubes, polygons as leaves (buildLeafPolygons),

@@ -80,6 +80,8 @@ public:
                 report_->crossingsLeft += weld.solidUnion.remainingIntersections;
                 report_->pinchedEdges += weld.solidUnion.pinchedEdges;
                 report_->crossingMoves += weld.solidUnion.crossingMoves;
+                report_->unionAttempts += weld.solidUnion.attempts;
+                report_->postponedMoves += weld.solidUnion.postponedMoves;
             } else if (!mesh.primitives.empty()) {
                 if (report_->unionsFailed++ == 0) report_->firstFailure = weld.solidUnion.failure;
             }

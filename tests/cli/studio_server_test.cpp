@@ -205,6 +205,8 @@ TEST_F(Studio, WeldsAndUnitesTheBarkAndWarnsOfPieces) {
     ASSERT_EQ(united.status, 200) << united.body.dump().substr(0, 300);
     EXPECT_EQ(united.body["stats"]["unions_applied"], 1);
     EXPECT_EQ(united.body["stats"]["union_crossings_left"], 0);
+    EXPECT_EQ(united.body["stats"]["union_attempts"], 1);
+    EXPECT_EQ(united.body["stats"]["union_postponed_moves"], 0);
     EXPECT_TRUE(united.body["warnings"].empty()) << united.body["warnings"].dump();
 
     const Reply wrong = post("/api/lsystem", json{{"text", small}, {"mesh", {{"weld", "yes"}}}});
