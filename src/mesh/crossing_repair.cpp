@@ -14,9 +14,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <unordered_map>
+
+#include "ramus/rng.hpp"
 
 namespace ramus::detail {
 namespace {
@@ -229,21 +230,21 @@ bool Separator::unpinch(std::uint32_t v) {
     return tryMoves(v, before);
 }
 
-// Bit patterns of a position, as the solid union welds them.
+// Bit patterns of a position, as the solid union welds them (+0.0 and -0.0 alike).
 struct PositionKey {
     std::array<std::uint32_t, 3> bits;
     bool operator==(const PositionKey&) const = default;
 };
 
-PositionKey keyOf(const Vec3f& p) {
+PositionKey keyOf(const Vec3f& position) {
+    const Vec3f p = position + Vec3f::Zero();
     return {std::bit_cast<std::uint32_t>(p.x()), std::bit_cast<std::uint32_t>(p.y()),
             std::bit_cast<std::uint32_t>(p.z())};
 }
 
 struct PositionKeyHash {
     std::size_t operator()(const PositionKey& k) const {
-        return std::hash<std::uint64_t>{}((std::uint64_t{k.bits[0]} << 32 | k.bits[1]) ^
-                                          (std::uint64_t{k.bits[2]} * 0x9E3779B97F4A7C15ull));
+        return hashCombine(hashCombine(k.bits[0], k.bits[1]), k.bits[2]);
     }
 };
 
