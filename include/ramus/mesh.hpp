@@ -88,6 +88,11 @@ void appendMesh(Mesh& mesh, const Mesh& other);
 /// The same, taking `other`'s arrays where `mesh` has none yet instead of copying them.
 void appendMesh(Mesh& mesh, Mesh&& other);
 
+/// Appends to `to` a copy of vertex `v` of `from` (which may be `to`): every vertex array that
+/// `from` has, custom attributes by position (`to` must have the same ones, in order). Returns
+/// the new vertex's index.
+std::uint32_t appendVertexCopy(Mesh& to, const Mesh& from, std::uint32_t v);
+
 /// Removes the vertices no triangle uses, keeping the others in order; every vertex array
 /// (normals, tangents, UVs, joints, weights, custom attributes) is compacted with them.
 void removeUnusedVertices(Mesh& mesh);

@@ -18,6 +18,8 @@ namespace ramus {
 
 /// The most attempts unionClosedSurfaces makes (each with other moves of the vertices).
 inline constexpr std::size_t kSolidUnionAttempts = 7;
+/// The most re-unions unionClosedSurfaces makes after each attempt that leaves defects.
+inline constexpr std::size_t kSolidUnionReunions = 2;
 
 /// What unionClosedSurfaces did, for tests and --stats.
 struct SolidUnionReport {
@@ -32,6 +34,10 @@ struct SolidUnionReport {
     /// Moves that made more than 1.5 times the triangles intersect that the first attempt's
     /// did, so their attempts came after the others' (where those left defects).
     std::size_t postponedMoves = 0;
+    /// Unions of a result with defects made again after moving the corners at its defects
+    /// (at most kSolidUnionReunions after each attempt): much cheaper than an attempt, as
+    /// little is cut.
+    std::size_t reunions = 0;
     std::size_t cavitiesFilled = 0;  ///< enclosed pockets whose inner surface was removed
     std::size_t enclosedPieces = 0;  ///< pieces inside such pockets, removed with them
     /// separate pieces with < 1e-6 of the largest piece's volume (wedges the cut leaves where
@@ -50,6 +56,9 @@ struct SolidUnionReport {
     /// edge once each way: sheets the cut left closer than float resolution, pinched together
     /// by rounding. Each sheet stays closed and oriented; its vertices there are its own.
     std::size_t pinchedEdges = 0;
+    /// Positions of the result where surfaces touch at a point (several fans of triangles around
+    /// one position, each its own vertex), the ends of pinched edges among them.
+    std::size_t touchingPoints = 0;
 };
 
 /// Replaces the surfaces of `mesh` by the outer boundary of the union of the solids they bound.
@@ -75,15 +84,20 @@ struct SolidUnionReport {
 /// (clamped to 1–kSolidUnionAttempts) moves are tried, larger and smaller ones in turn (1e-5,
 /// 3e-5, 5e-6, 1e-5, 5e-6, 2e-5, 1e-4 of the extent, each time other vertices' moves; a move
 /// that makes more than 1.5 times the triangles intersect that the first did is tried last,
-/// report->postponedMoves), and the first result without crossings and pinched edges, else
-/// the one with the fewest of both, is kept (report->remainingIntersections,
-/// report->pinchedEdges). Each attempt is a whole union; fewer trade a clean result for time. On
+/// report->postponedMoves), and the first result without crossings, pinched edges and points
+/// where surfaces touch (their corners are moved apart as pinched sheets'), else the one with
+/// the fewest, is kept (report->remainingIntersections, report->pinchedEdges,
+/// report->touchingPoints). Each attempt is a whole union; fewer trade a clean result for time.
+/// After an attempt that leaves defects, the result itself is united again with the corners at
+/// its defects moved by as much as the attempt moved every vertex, up to `maxReunions` times
+/// (report->reunions): little is cut then, so each costs a fraction of an attempt. On
 /// any failure (input not closed, a degenerate configuration the refinement does not handle, no
 /// result that passes the check) the mesh is left as it was and the reason goes to report->failure.
 /// Deterministic. Returns report.applied. Throws Error (kSolidUnionMissing) in a build without CGAL
 /// (solidUnionAvailable() false).
 bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr,
-                         std::size_t maxAttempts = kSolidUnionAttempts);
+                         std::size_t maxAttempts = kSolidUnionAttempts,
+                         std::size_t maxReunions = kSolidUnionReunions);
 
 /// Whether this build has the solid union: CGAL's Polygon Mesh Processing is GPL-3.0-or-later,
 /// and a build configured with -DRAMUS_WITH_CGAL=OFF leaves it (and the GPL) out.

@@ -40,6 +40,9 @@ struct WeldedMeshParams {
     /// clamped to 1–kSolidUnionAttempts): each is a whole union more where the last kept crossings
     /// or pinched edges, so fewer trade a clean surface for time.
     std::size_t unionAttempts = kSolidUnionAttempts;
+    /// With solidUnion: the most re-unions after each attempt (unionClosedSurfaces'
+    /// maxReunions; 0: none).
+    std::size_t unionReunions = kSolidUnionReunions;
 };
 
 /// What the welder did, for tests and --stats.

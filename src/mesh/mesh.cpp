@@ -134,6 +134,29 @@ void appendMesh(Mesh& mesh, const Mesh& other) { appendMeshFrom(mesh, other); }
 
 void appendMesh(Mesh& mesh, Mesh&& other) { appendMeshFrom(mesh, std::move(other)); }
 
+std::uint32_t appendVertexCopy(Mesh& to, const Mesh& from, std::uint32_t v) {
+    const auto made = static_cast<std::uint32_t>(to.positions.size());
+    auto copy = [&](auto& into, const auto& values) {
+        if (values.empty()) return;
+        auto value = values[v];  // a copy first: `into` may be `values`, and grow
+        into.push_back(value);
+    };
+    copy(to.positions, from.positions);
+    copy(to.normals, from.normals);
+    copy(to.tangents, from.tangents);
+    copy(to.uvs, from.uvs);
+    copy(to.joints, from.joints);
+    copy(to.weights, from.weights);
+    for (std::size_t a = 0; a < from.attributes.size(); ++a) {
+        const auto width = static_cast<std::size_t>(from.attributes[a].components);
+        const auto first =
+            from.attributes[a].values.begin() + static_cast<std::ptrdiff_t>(width * v);
+        const std::vector<float> value(first, first + static_cast<std::ptrdiff_t>(width));
+        to.attributes[a].values.insert(to.attributes[a].values.end(), value.begin(), value.end());
+    }
+    return made;
+}
+
 void removeUnusedVertices(Mesh& mesh) {
     std::vector<std::uint32_t> remap(mesh.positions.size(), 0);
     for (std::uint32_t i : mesh.indices) remap[i] = 1;

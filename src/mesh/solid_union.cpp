@@ -27,13 +27,19 @@
 //    Pockets (closed components of negative volume) are filled, with any piece inside one.
 // 6. Rounding to float can make grazing surfaces cross (CGAL's exact self-intersection test on
 //    the floats, near the triangles that were cut or moved: the others were tested in step 2)
-//    or pinch two sheets together along an edge: the corners of each crossing pair
-//    are moved a few float steps apart, where that lowers the crossings and turns no triangle
-//    over, and then one sheet's corners at a pinched edge into its own solid, where that adds
-//    no crossing (crossing_repair.hpp); up to three rounds, each allowed larger moves.
+//    or pinch two sheets together along an edge, and the union keeps points where surfaces
+//    touch (pieces of one input triangle on both sides of a cut meeting at a corner): the
+//    corners of each crossing pair are moved a few float steps apart, where that lowers the
+//    crossings and turns no triangle over, and then the corners of one sheet at a pinched edge
+//    or a touching point into its own solid, where that adds no crossing
+//    (crossing_repair.hpp); up to three rounds, each allowed larger moves.
 // 7. Rounding can also break the check: up to seven moves are tried (kUnionMoves), and the
-//    first result without crossings or pinched edges, else the one with the fewest of both,
-//    replaces the mesh.
+//    first result without crossings, pinched edges or touching points, else the one with the
+//    fewest, replaces the mesh.
+// 8. After each attempt that leaves some, the result itself is united again (up to
+//    kSolidUnionReunions times) with only the corners of its defects moved: its other triangles cross nothing, so
+//    a few dozen are cut instead of tens of thousands (session 29: ABOP 1.24c was clean at
+//    its fourth attempt after 64 s, now after its first and one re-union in 19 s).
 #include "ramus/solid_union.hpp"
 
 #include "ramus/error.hpp"
@@ -620,17 +626,8 @@ private:
         const std::uint64_t key = std::uint64_t{v} << 32 | vertex;
         const auto found = copied_.find(key);
         if (found != copied_.end()) return found->second;
-        const std::uint32_t made = append(p.cast<float>());
-        if (!in_.normals.empty()) out_.normals.push_back(in_.normals[v]);
-        if (!in_.tangents.empty()) out_.tangents.push_back(in_.tangents[v]);
-        if (!in_.uvs.empty()) out_.uvs.push_back(in_.uvs[v]);
-        for (std::size_t a = 0; a < in_.attributes.size(); ++a) {
-            const auto width = static_cast<std::size_t>(in_.attributes[a].components);
-            const auto first =
-                in_.attributes[a].values.begin() + static_cast<std::ptrdiff_t>(width * v);
-            out_.attributes[a].values.insert(out_.attributes[a].values.end(), first,
-                                             first + static_cast<std::ptrdiff_t>(width));
-        }
+        const std::uint32_t made = appendVertexCopy(out_, in_, v);
+        out_.positions[made] = p.cast<float>();
         copied_.emplace(key, made);
         return made;
     }
@@ -802,29 +799,29 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
                                        const DirectedEdges& table, std::uint32_t* count) {
     const std::vector<DirectedEdge>& edges = table.all();
     const std::size_t corners = indices.size();
-    std::vector<std::uint32_t> parent(corners);
-    std::iota(parent.begin(), parent.end(), 0u);
-    // The twin b→a of corner c's edge a→b starts at b: its corner is a's neighbour in the same
-    // fan as c's next.
-    auto join = [&](std::uint32_t c, std::uint32_t other) {
-        parent[findRoot(parent, nextCorner(other))] = findRoot(parent, c);
-        parent[findRoot(parent, other)] = findRoot(parent, nextCorner(c));
-    };
+    // Per corner whose edge is a→b: the corner of the use b→a it is paired with; edges shared
+    // by several sheets listed in `shared` (their uses a→b in all()).
+    std::vector<std::uint32_t> twinOf(corners, kUnknown);
+    std::vector<std::pair<std::size_t, std::size_t>> shared;
     std::vector<char> paired(corners, 0);
+    auto pair = [&](std::uint32_t c, std::uint32_t twin) {
+        paired[c] = paired[twin] = 1;
+        twinOf[c] = twin;
+    };
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
         while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
         const std::uint64_t reverse = reversed(edges[i].welded);
         if (edges[i].welded < reverse) {                     // each undirected edge once
             const auto [first, last] = table.uses(reverse);  // as many as a→b: closed
-            for (int pass = 0; pass < 2; ++pass) {           // same input vertices first, then any
+            if (j - i > 1) shared.emplace_back(i, j);
+            for (int pass = 0; pass < 2; ++pass) {  // same input vertices first, then any
                 for (std::size_t k = i; k < j; ++k) {
                     if (paired[edges[k].corner]) continue;
                     for (auto twin = first; twin != last; ++twin) {
                         if (paired[twin->corner]) continue;
                         if (pass == 0 && twin->input != reversed(edges[k].input)) continue;
-                        paired[edges[k].corner] = paired[twin->corner] = 1;
-                        join(edges[k].corner, twin->corner);
+                        pair(edges[k].corner, twin->corner);
                         break;
                     }
                 }
@@ -833,14 +830,48 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
         i = j;
     }
     std::vector<std::uint32_t> vertex(corners);
-    std::vector<std::uint32_t> number(corners, kUnknown);
-    std::uint32_t next = 0;
-    for (std::size_t c = 0; c < corners; ++c) {
-        std::uint32_t& n = number[findRoot(parent, static_cast<std::uint32_t>(c))];
-        if (n == kUnknown) n = next++;
-        vertex[c] = n;
+    std::vector<std::uint32_t> parent(corners);
+    auto number = [&] {
+        std::iota(parent.begin(), parent.end(), 0u);
+        // The twin b→a of corner c's edge a→b starts at b: its corner is a's neighbour in the
+        // same fan as c's next.
+        for (std::uint32_t c = 0; c < corners; ++c) {
+            const std::uint32_t twin = twinOf[c];
+            if (twin == kUnknown) continue;
+            parent[findRoot(parent, nextCorner(twin))] = findRoot(parent, c);
+            parent[findRoot(parent, twin)] = findRoot(parent, nextCorner(c));
+        }
+        std::vector<std::uint32_t> numbered(corners, kUnknown);
+        std::uint32_t next = 0;
+        for (std::size_t c = 0; c < corners; ++c) {
+            std::uint32_t& n = numbered[findRoot(parent, static_cast<std::uint32_t>(c))];
+            if (n == kUnknown) n = next++;
+            vertex[c] = n;
+        }
+        *count = next;
+    };
+    number();
+    // Where a shared edge's uses a→b start and end at the same two vertices, the edge is used
+    // twice between them, which no move of a vertex parts (a surface mesh does not even take
+    // it): the pairing there is turned by one (each use a→b takes the next one's twin), which
+    // splits each end into a vertex per sheet (session 29: ABOP 1.24c, where the fan around
+    // one end had passed through the edge twice).
+    bool turned = false;
+    for (const auto& [i, j] : shared) {
+        bool twice = false;
+        for (std::size_t k = i; k < j && !twice; ++k) {
+            for (std::size_t l = k + 1; l < j && !twice; ++l) {
+                const std::uint32_t c = edges[k].corner, d = edges[l].corner;
+                twice = vertex[c] == vertex[d] && vertex[nextCorner(c)] == vertex[nextCorner(d)];
+            }
+        }
+        if (!twice) continue;
+        const std::uint32_t firstTwin = twinOf[edges[i].corner];
+        for (std::size_t k = i; k + 1 < j; ++k) twinOf[edges[k].corner] = twinOf[edges[k + 1].corner];
+        twinOf[edges[j - 1].corner] = firstTwin;
+        turned = true;
     }
-    *count = next;
+    if (turned) number();
     return vertex;
 }
 
@@ -878,6 +909,16 @@ Surfaces surfacesOf(const Mesh& mesh) {
     return surfacesOf(std::move(weld), positions, mesh.indices);
 }
 
+// `p`, the position of surface vertex `v`, moved by up to `step` along each axis (a fixed hash
+// of `salt` and `v`), as floats.
+Vec3f hashMoved(Vec3f p, std::uint32_t v, double step, std::uint64_t salt) {
+    for (unsigned axis = 0; axis < 3; ++axis) {
+        const double h = detail::hashUnit(salt + 3 * std::uint64_t{v} + axis);
+        p[axis] = static_cast<float>(p[axis] + h * step);
+    }
+    return p;
+}
+
 // postponed: the move made more triangles intersect than allowed (unionAttempt's cutLimit).
 enum class Outcome { done, badInput, retry, postponed };
 
@@ -908,12 +949,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         const std::uint32_t v = fan[c];
         if (made[v]) continue;
-        Vec3f p = mesh.positions[mesh.indices[c]];
-        for (unsigned axis = 0; axis < 3; ++axis) {
-            const double h = detail::hashUnit(salt + 3 * std::uint64_t{v} + axis);
-            p[axis] = static_cast<float>(p[axis] + h * step);
-        }
-        movedFloat[v] = p;
+        movedFloat[v] = hashMoved(mesh.positions[mesh.indices[c]], v, step, salt);
         made[v] = 1;
     }
     std::vector<Vec3> movedVertex(vertices);
@@ -1248,15 +1284,108 @@ std::vector<std::uint32_t> pinchedSheetCorners(const Mesh& mesh, const Surfaces&
     return vertices;
 }
 
+// Gives every surface vertex of `surfaces` (closed, of `mesh`) mesh vertices of its own: where
+// one mesh vertex serves several (surfaces touching at a point: the union keeps such points
+// where pieces of one input triangle on both sides of a cut meet, about 400–600 on ABOP 1.24a
+// and 1.24c), the corners of all but the first get a copy of it. Positions, surface vertices
+// and fans stay as they are.
+void splitSharedMeshVertices(Mesh& mesh, Surfaces& surfaces) {
+    std::vector<std::uint32_t> owner(mesh.positions.size(), kUnknown);
+    std::unordered_map<std::uint64_t, std::uint32_t> copies;  // (mesh, surface vertex) → copy
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t vertex = mesh.indices[c];
+        const std::uint32_t surfaceVertex = surfaces.fan[c];
+        if (owner[vertex] == kUnknown) owner[vertex] = surfaceVertex;
+        if (owner[vertex] == surfaceVertex) continue;
+        const auto [at, added] =
+            copies.try_emplace(std::uint64_t{vertex} << 32 | surfaceVertex, kUnknown);
+        if (added) {
+            at->second = appendVertexCopy(mesh, mesh, vertex);
+            surfaces.weld.push_back(surfaces.weld[vertex]);
+        }
+        mesh.indices[c] = at->second;
+    }
+}
+
+// Surface vertices of the closed `surfaces` of `mesh` at positions that other surface vertices
+// share, in the order unpinchVertices tries them: the corners of pinched edges
+// (pinchedSheetCorners), then at each other such position every surface vertex but the first,
+// then the first ones. Where surfaces touch at a point (the union keeps such points where pieces
+// of one input triangle on both sides of a cut meet: 400–600 on ABOP 1.24a and 1.24c, session
+// 29) the surface is not a 2-manifold at that vertex, and a later union would meet the point as
+// a triple intersection.
+std::vector<std::uint32_t> sheetCornersToPart(const Mesh& mesh, const Surfaces& surfaces) {
+    std::vector<std::uint32_t> vertices = pinchedSheetCorners(mesh, surfaces);
+    std::vector<char> listed(surfaces.vertices, 0);
+    for (const std::uint32_t v : vertices) listed[v] = 1;
+    std::vector<std::uint32_t> first(surfaces.positions, kUnknown);  // per position
+    std::vector<std::uint32_t> firstOnes;
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t v = surfaces.fan[c];
+        std::uint32_t& owner = first[surfaces.weld[mesh.indices[c]]];
+        if (owner == kUnknown) owner = v;
+        if (owner == v || listed[v]) continue;
+        vertices.push_back(v);
+        listed[v] = 1;
+        if (!listed[owner]) firstOnes.push_back(owner);
+        listed[owner] = 1;
+    }
+    vertices.insert(vertices.end(), firstOnes.begin(), firstOnes.end());
+    return vertices;
+}
+
+// Positions of `mesh` shared by several surface vertices of the closed `surfaces`: points where
+// surfaces touch, and the ends of pinched edges.
+std::size_t touchingPoints(const Mesh& mesh, const Surfaces& surfaces) {
+    std::vector<std::uint32_t> first(surfaces.positions, kUnknown);
+    std::vector<char> counted(surfaces.positions, 0);
+    std::size_t points = 0;
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t position = surfaces.weld[mesh.indices[c]];
+        if (first[position] == kUnknown) first[position] = surfaces.fan[c];
+        if (first[position] == surfaces.fan[c] || counted[position]) continue;
+        counted[position] = 1;
+        ++points;
+    }
+    return points;
+}
+
+// Pieces that hung on the rest of the closed `surfaces` of `mesh` only at points where surfaces
+// touched are separate once those are parted: pockets and slivers of 2–4 triangles that the cut
+// left (volume 0 or -2e-8 on ABOP 1.24b and 1.27, session 29). They go as in step 5
+// (outerSurfaces), `surfaces` and the pairs `crossing` follow.
+void dropPartedPieces(Mesh& mesh, Surfaces& surfaces, std::vector<detail::TrianglePair>& crossing,
+                      SolidUnionReport& report) {
+    const std::size_t cavities = report.cavitiesFilled;
+    const std::vector<char> keep = outerSurfaces(mesh, surfaces.weld, surfaces.positions, report);
+    report.cavitiesFilled += cavities;
+    if (std::find(keep.begin(), keep.end(), 0) == keep.end()) return;
+    std::vector<std::uint32_t> kept(keep.size(), kUnknown);  // per triangle: its new index
+    std::uint32_t next = 0;
+    for (std::size_t t = 0; t < keep.size(); ++t) {
+        if (keep[t]) kept[t] = next++;
+    }
+    std::erase_if(crossing, [&](const detail::TrianglePair& p) {
+        return !keep[p.first] || !keep[p.second];
+    });
+    for (detail::TrianglePair& p : crossing) p = {kept[p.first], kept[p.second]};
+    keepTriangles(mesh, keep);
+    surfaces = surfacesOf(mesh);
+    report.outputComponents = countComponents(surfaces.weld, surfaces.positions, mesh.indices);
+}
+
 // 6. Moves corners a few float steps (crossing_repair.hpp) to separate the crossing pairs of the
 // closed surfaces `surfaces` of `mesh`, then to part sheets pinched together along an edge;
 // `report` gets the moves and what is left: crossings (counted again over the whole mesh) and
-// pinched edges.
+// pinched edges; `left` the crossing pairs left.
 void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& uncrossed,
-                             SolidUnionReport& report) {
+                             SolidUnionReport& report, std::vector<detail::TrianglePair>& left) {
     const double extent = mesh.bounds().extent().maxCoeff();
+    splitSharedMeshVertices(mesh, surfaces);
     std::vector<detail::TrianglePair> crossing =
         crossingPairs(mesh, surfaces, trianglesNotIn(mesh, uncrossed));
+    std::size_t touching = touchingPoints(mesh, surfaces);
+    const bool touched = touching > 0;
     // Moves `surface` (crossingSurfaceOf(mesh, surfaces), moved by `repair`) into the mesh and
     // counts the crossings again, where they can have changed: at the triangles that moved or
     // crossed before.
@@ -1267,22 +1396,61 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& u
         if (!takeMoves(mesh, surfaces, surface)) return;
         report.crossingMoves += repair.movedVertices;
         crossing = crossingPairs(mesh, surfaces, suspect);
+        touching = touchingPoints(mesh, surfaces);
     };
     for (const double move : kSeparationMoves) {
-        if (crossing.empty() && surfaces.pinchedEdges == 0) break;
+        if (crossing.empty() && touching == 0) break;
         const double maxMove = move * extent;
         if (!crossing.empty()) {
             detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
             take(surface, detail::separateCrossings(surface, crossing, maxMove));
         }
-        if (surfaces.pinchedEdges > 0) {
+        if (touching > 0) {
             detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
-            const std::vector<std::uint32_t> corners = pinchedSheetCorners(mesh, surfaces);
+            const std::vector<std::uint32_t> corners = sheetCornersToPart(mesh, surfaces);
             take(surface, detail::unpinchVertices(surface, corners, maxMove));
         }
     }
+    if (touched) dropPartedPieces(mesh, surfaces, crossing, report);
     report.remainingIntersections = crossing.size();
     report.pinchedEdges = surfaces.pinchedEdges;
+    report.touchingPoints = touchingPoints(mesh, surfaces);
+    left = std::move(crossing);
+}
+
+// Surface vertices of the closed `surfaces` of `mesh` where a result has defects: the corners
+// of the crossing pairs `crossing`, and every surface vertex whose position another one shares
+// (sheets pinched together along an edge, surfaces touching at a point), which a refinement
+// would meet as exact coincidences.
+std::vector<char> defectVertices(const Mesh& mesh, const Surfaces& surfaces,
+                                 const std::vector<detail::TrianglePair>& crossing) {
+    std::vector<char> defect(surfaces.vertices, 0);
+    for (const auto& [s, t] : crossing) {
+        for (const std::uint32_t triangle : {s, t}) {
+            for (std::size_t k = 0; k < 3; ++k) defect[surfaces.fan[3 * std::size_t{triangle} + k]] = 1;
+        }
+    }
+    for (const std::uint32_t v : sheetCornersToPart(mesh, surfaces)) defect[v] = 1;
+    return defect;
+}
+
+
+// Re-union, step 8: moves the defect vertices (defectVertices) of the closed `surfaces` of
+// `mesh` by up to `jitter` of the extent (hash salt `salt`), where they may move
+// (crossingSurfaceOf), into `mesh` and `surfaces`; false, both unchanged, where that leaves them
+// not closed.
+bool moveDefectVertices(Mesh& mesh, Surfaces& surfaces,
+                        const std::vector<detail::TrianglePair>& crossing, double jitter,
+                        std::uint64_t salt) {
+    const std::vector<char> defect = defectVertices(mesh, surfaces, crossing);
+    const double step = jitter * mesh.bounds().extent().maxCoeff();
+    detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
+    for (std::uint32_t v = 0; v < surfaces.vertices; ++v) {
+        if (defect[v] && !surface.fixed[v]) {
+            surface.points[v] = hashMoved(surface.points[v], v, step, salt);
+        }
+    }
+    return takeMoves(mesh, surfaces, surface);
 }
 
 // The moves of the attempts (step 7), in order: the largest move of a surface vertex as a
@@ -1318,14 +1486,33 @@ static_assert(std::size(kUnionMoves) == kSolidUnionAttempts);
 // to a hundredth of the cut.
 std::size_t postponedAbove(std::size_t firstCut) { return firstCut + firstCut / 2; }
 
-// What makes a result less than one clean 2-manifold: crossing triangle pairs and pinched edges.
+// The hash salt of the re-unions' moves (step 8), added per round to the attempt's salt.
+constexpr std::uint64_t kReunionSalt = 0x2E0;
+
+// What makes a result less than one clean 2-manifold: crossing triangle pairs, pinched edges and
+// points where surfaces touch.
 std::size_t defects(const SolidUnionReport& report) {
-    return report.remainingIntersections + report.pinchedEdges;
+    return report.remainingIntersections + report.pinchedEdges + report.touchingPoints;
+}
+
+// `report`, of a result, after a re-union of it that `reunion` reports: what is left is the
+// re-union's, what was done adds up (its patches and cuts are not the attempt's).
+void addReunion(SolidUnionReport& report, const SolidUnionReport& reunion) {
+    report.outputComponents = reunion.outputComponents;
+    report.newVertices += reunion.newVertices;
+    report.cavitiesFilled += reunion.cavitiesFilled;
+    report.enclosedPieces += reunion.enclosedPieces;
+    report.sliversRemoved += reunion.sliversRemoved;
+    report.crossingMoves += reunion.crossingMoves;
+    report.remainingIntersections = reunion.remainingIntersections;
+    report.pinchedEdges = reunion.pinchedEdges;
+    report.touchingPoints = reunion.touchingPoints;
 }
 
 }  // namespace
 
-bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAttempts) {
+bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAttempts,
+                         std::size_t maxReunions) {
     SolidUnionReport local;
     SolidUnionReport& r = report != nullptr ? *report : local;
     r = SolidUnionReport{};
@@ -1346,8 +1533,10 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
     }
     std::optional<Mesh> best;
     SolidUnionReport bestReport;
+    std::vector<detail::TrianglePair> bestCrossing;  // the crossing pairs best has left
     std::size_t firstCut = 0;  // input triangles that intersect after the first attempt's move
     std::vector<UnionMove> postponed;
+    auto clean = [&] { return best && defects(bestReport) == 0; };
     // One attempt with `move`, unless it makes more than `cutLimit` triangles intersect
     // (postponed); keeps the result if it is the best so far.
     auto attempt = [&](const UnionMove& move, std::size_t cutLimit) {
@@ -1365,32 +1554,64 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
         if (++r.attempts == 1) firstCut = cut;
         r.failure = tried.failure;
         if (outcome != Outcome::done) return outcome;
-        separateRoundingDefects(trial, surfacesOf(trial), uncrossed, tried);
+        std::vector<detail::TrianglePair> left;
+        separateRoundingDefects(trial, surfacesOf(trial), uncrossed, tried, left);
         if (!best || defects(tried) < defects(bestReport)) {
             best = std::move(trial);
             bestReport = tried;
+            bestCrossing = std::move(left);
         }
         return outcome;
     };
-    auto clean = [&] { return best && defects(bestReport) == 0; };
+    // Step 8: unites the best result again after moving its defect vertices (moveDefectVertices)
+    // by `move`, up to maxReunions times while it has defects; a result with fewer replaces it.
+    auto reunite = [&](const UnionMove& move) {
+        for (std::size_t round = 0; round < maxReunions && !clean(); ++round) {
+            Mesh trial = *best;
+            Surfaces surfaces = surfacesOf(trial);
+            if (!surfaces.closed ||
+                !moveDefectVertices(trial, surfaces, bestCrossing, move.jitter,
+                                    move.salt + kReunionSalt * (round + 1))) {
+                return;
+            }
+            SolidUnionReport tried;
+            tried.inputComponents = bestReport.outputComponents;
+            TriangleSet uncrossed;
+            std::size_t cut = 0;
+            ++r.reunions;
+            if (unionAttempt(trial, surfaces, tried, 0.0, 0, std::numeric_limits<std::size_t>::max(),
+                             cut, uncrossed) != Outcome::done) {
+                return;
+            }
+            std::vector<detail::TrianglePair> left;
+            separateRoundingDefects(trial, surfacesOf(trial), uncrossed, tried, left);
+            if (defects(tried) >= defects(bestReport)) continue;
+            best = std::move(trial);
+            bestCrossing = std::move(left);
+            addReunion(bestReport, tried);
+        }
+    };
     const std::size_t moves = std::clamp<std::size_t>(maxAttempts, 1, std::size(kUnionMoves));
     for (const UnionMove& move : std::span(kUnionMoves, moves)) {
         const std::size_t cutLimit =
             r.attempts == 0 ? std::numeric_limits<std::size_t>::max() : postponedAbove(firstCut);
-        if (attempt(move, cutLimit) == Outcome::badInput) return false;
+        const Outcome outcome = attempt(move, cutLimit);
+        if (outcome == Outcome::badInput) return false;
+        if (outcome == Outcome::done) reunite(move);
         if (clean()) break;
     }
     const std::size_t postponedMoves = postponed.size();
     for (const UnionMove& move : std::vector<UnionMove>(std::move(postponed))) {
         if (clean()) break;
-        if (attempt(move, std::numeric_limits<std::size_t>::max()) == Outcome::badInput) {
-            return false;
-        }
+        const Outcome outcome = attempt(move, std::numeric_limits<std::size_t>::max());
+        if (outcome == Outcome::badInput) return false;
+        if (outcome == Outcome::done) reunite(move);
     }
     if (!best) return false;
-    const std::size_t made = r.attempts;
+    const std::size_t made = r.attempts, reunions = r.reunions;
     r = bestReport;
     r.attempts = made;
+    r.reunions = reunions;
     r.postponedMoves = postponedMoves;
     r.applied = true;
     r.failure.clear();
@@ -1405,7 +1626,7 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
 namespace ramus {
 
 bool unionClosedSurfaces(Mesh& /*mesh*/, SolidUnionReport* /*report*/,
-                         std::size_t /*maxAttempts*/) {
+                         std::size_t /*maxAttempts*/, std::size_t /*maxReunions*/) {
     throw Error(std::string(kSolidUnionMissing));
 }
 

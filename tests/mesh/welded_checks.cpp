@@ -133,6 +133,29 @@ Topology analyzeTopology(const Mesh& mesh) {
         if (bad[v] && !open[root]) open[root] = 1, ++top.openComponents;
     }
     top.closedOriented = top.openComponents == 0;
+    if (!top.closedOriented) return top;
+    // Fans: the corners at a position joined across each edge from it with the twin's corner
+    // there; a position with more than one fan is where surfaces touch.
+    std::unordered_map<std::uint64_t, std::uint32_t> cornerOfEdge;  // a→b → the corner at a
+    auto next = [](std::uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; };
+    for (std::uint32_t c = 0; c < mesh.indices.size(); ++c) {
+        cornerOfEdge[std::uint64_t{id[mesh.indices[c]]} << 32 | id[mesh.indices[next(c)]]] = c;
+    }
+    std::vector<std::uint32_t> fan(mesh.indices.size());
+    std::iota(fan.begin(), fan.end(), 0u);
+    for (std::uint32_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t a = id[mesh.indices[c]], b = id[mesh.indices[next(c)]];
+        const std::uint32_t twin = cornerOfEdge.at(std::uint64_t{b} << 32 | a);  // at b
+        fan[findRoot(fan, c)] = findRoot(fan, next(twin));
+    }
+    std::vector<std::uint32_t> firstFan(mesh.positions.size(), std::numeric_limits<std::uint32_t>::max());
+    std::vector<std::uint8_t> counted(mesh.positions.size(), 0);
+    for (std::uint32_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t a = id[mesh.indices[c]];
+        const std::uint32_t root = findRoot(fan, c);
+        if (firstFan[a] == std::numeric_limits<std::uint32_t>::max()) firstFan[a] = root;
+        if (firstFan[a] != root && !counted[a]) counted[a] = 1, ++top.nonManifoldVertices;
+    }
     return top;
 }
 

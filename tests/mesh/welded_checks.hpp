@@ -31,6 +31,9 @@ struct Topology {
     /// Components with an edge that breaks that (closedOriented: none); the others are each
     /// closed and consistently wound.
     std::size_t openComponents = 0;
+    /// Where closedOriented: positions whose triangles form more than one fan (surfaces that
+    /// touch at a point there, or along an edge: not a 2-manifold).
+    std::size_t nonManifoldVertices = 0;
     long long euler() const {
         return static_cast<long long>(vertices) - static_cast<long long>(edges) +
                static_cast<long long>(faces);
