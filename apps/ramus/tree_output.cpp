@@ -127,9 +127,11 @@ void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
         stats["union_tubed_junctions"] = report.tubedForUnion;
         stats["union_crossings_left"] = report.crossingsLeft;
         stats["union_pinched_edges"] = report.pinchedEdges;
+        stats["union_touching_points"] = report.touchingPoints;
         stats["union_crossing_moves"] = report.crossingMoves;
         stats["union_attempts"] = report.unionAttempts;
         stats["union_postponed_moves"] = report.postponedMoves;
+        stats["union_reunions"] = report.reunions;
     }
 }
 

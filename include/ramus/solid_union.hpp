@@ -59,6 +59,9 @@ struct SolidUnionReport {
     /// Positions of the result where surfaces touch at a point (several fans of triangles around
     /// one position, each its own vertex), the ends of pinched edges among them.
     std::size_t touchingPoints = 0;
+    /// What keeps the result from being one clean 2-manifold: crossing pairs, pinched edges and
+    /// touching points.
+    std::size_t defects() const { return remainingIntersections + pinchedEdges + touchingPoints; }
 };
 
 /// Replaces the surfaces of `mesh` by the outer boundary of the union of the solids they bound.

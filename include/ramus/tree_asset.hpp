@@ -62,12 +62,12 @@ struct TreeMeshReport {
     /// Over the united meshes: junctions meshed as tubes for the union (WeldReport::tubedForUnion).
     std::size_t tubedForUnion = 0;
     std::string firstFailure;  ///< SolidUnionReport::failure of the first failed one
-    /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges and
-    /// ::crossingMoves.
-    std::size_t crossingsLeft = 0, pinchedEdges = 0, crossingMoves = 0;
-    /// Over the united meshes: SolidUnionReport::attempts (each a whole union) and
-    /// ::postponedMoves.
-    std::size_t unionAttempts = 0, postponedMoves = 0;
+    /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges,
+    /// ::touchingPoints and ::crossingMoves.
+    std::size_t crossingsLeft = 0, pinchedEdges = 0, touchingPoints = 0, crossingMoves = 0;
+    /// Over the united meshes: SolidUnionReport::attempts (each a whole union), ::postponedMoves
+    /// and ::reunions.
+    std::size_t unionAttempts = 0, postponedMoves = 0, reunions = 0;
 };
 
 /// The full-detail mesh "tree" of all `trees`: tubes, polygons as leaves (buildLeafPolygons),

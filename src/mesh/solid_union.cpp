@@ -1489,12 +1489,6 @@ std::size_t postponedAbove(std::size_t firstCut) { return firstCut + firstCut / 
 // The hash salt of the re-unions' moves (step 8), added per round to the attempt's salt.
 constexpr std::uint64_t kReunionSalt = 0x2E0;
 
-// What makes a result less than one clean 2-manifold: crossing triangle pairs, pinched edges and
-// points where surfaces touch.
-std::size_t defects(const SolidUnionReport& report) {
-    return report.remainingIntersections + report.pinchedEdges + report.touchingPoints;
-}
-
 // `report`, of a result, after a re-union of it that `reunion` reports: what is left is the
 // re-union's, what was done adds up (its patches and cuts are not the attempt's).
 void addReunion(SolidUnionReport& report, const SolidUnionReport& reunion) {
@@ -1536,7 +1530,7 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
     std::vector<detail::TrianglePair> bestCrossing;  // the crossing pairs best has left
     std::size_t firstCut = 0;  // input triangles that intersect after the first attempt's move
     std::vector<UnionMove> postponed;
-    auto clean = [&] { return best && defects(bestReport) == 0; };
+    auto clean = [&] { return best && bestReport.defects() == 0; };
     // One attempt with `move`, unless it makes more than `cutLimit` triangles intersect
     // (postponed); keeps the result if it is the best so far.
     auto attempt = [&](const UnionMove& move, std::size_t cutLimit) {
@@ -1556,7 +1550,7 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
         if (outcome != Outcome::done) return outcome;
         std::vector<detail::TrianglePair> left;
         separateRoundingDefects(trial, surfacesOf(trial), uncrossed, tried, left);
-        if (!best || defects(tried) < defects(bestReport)) {
+        if (!best || tried.defects() < bestReport.defects()) {
             best = std::move(trial);
             bestReport = tried;
             bestCrossing = std::move(left);
@@ -1585,7 +1579,7 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
             }
             std::vector<detail::TrianglePair> left;
             separateRoundingDefects(trial, surfacesOf(trial), uncrossed, tried, left);
-            if (defects(tried) >= defects(bestReport)) continue;
+            if (tried.defects() >= bestReport.defects()) continue;
             best = std::move(trial);
             bestCrossing = std::move(left);
             addReunion(bestReport, tried);

@@ -79,9 +79,11 @@ public:
                 report_->tubedForUnion += weld.tubedForUnion;
                 report_->crossingsLeft += weld.solidUnion.remainingIntersections;
                 report_->pinchedEdges += weld.solidUnion.pinchedEdges;
+                report_->touchingPoints += weld.solidUnion.touchingPoints;
                 report_->crossingMoves += weld.solidUnion.crossingMoves;
                 report_->unionAttempts += weld.solidUnion.attempts;
                 report_->postponedMoves += weld.solidUnion.postponedMoves;
+                report_->reunions += weld.solidUnion.reunions;
             } else if (!mesh.primitives.empty()) {
                 if (report_->unionsFailed++ == 0) report_->firstFailure = weld.solidUnion.failure;
             }

@@ -433,10 +433,9 @@ namespace ramus {
 
 namespace {
 
-// Crossing pairs and pinched edges a union left; a union that failed counts as worst.
+// The defects a union left; a union that failed counts as worst.
 std::size_t unionDefects(const SolidUnionReport& united) {
-    return united.applied ? united.remainingIntersections + united.pinchedEdges
-                          : std::numeric_limits<std::size_t>::max();
+    return united.applied ? united.defects() : std::numeric_limits<std::size_t>::max();
 }
 
 }  // namespace

@@ -63,6 +63,8 @@ TEST(WeldCli, LsystemUnionUnitesTheWeldedBark) {
     EXPECT_EQ(united["union_crossings_left"], 0);
     EXPECT_EQ(united["union_attempts"], 1);  // clean at the first
     EXPECT_EQ(united["union_postponed_moves"], 0);
+    EXPECT_EQ(united["union_reunions"], 0);
+    EXPECT_EQ(united["union_touching_points"], 0);
     EXPECT_NE(united["triangles"], welded["triangles"]);
     ASSERT_TRUE(fs::exists(glb));
     keepForValidation(glb, "union_cli_tree_3d_tropism.glb");
