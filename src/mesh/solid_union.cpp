@@ -37,9 +37,9 @@
 //    first result without crossings, pinched edges or touching points, else the one with the
 //    fewest, replaces the mesh.
 // 8. After each attempt that leaves some, the result itself is united again (up to
-//    kSolidUnionReunions times) with only the corners of its defects moved: its other triangles cross nothing, so
-//    a few dozen are cut instead of tens of thousands (session 29: ABOP 1.24c was clean at
-//    its fourth attempt after 64 s, now after its first and one re-union in 19 s).
+//    kSolidUnionReunions times) with only the corners of its defects moved: its other triangles
+//    cross nothing, so a few dozen are cut instead of tens of thousands (session 29: ABOP 1.24c was
+//    clean at its fourth attempt after 64 s, now after its first and one re-union in 19 s).
 #include "ramus/solid_union.hpp"
 
 #include "ramus/error.hpp"
@@ -867,7 +867,8 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
         }
         if (!twice) continue;
         const std::uint32_t firstTwin = twinOf[edges[i].corner];
-        for (std::size_t k = i; k + 1 < j; ++k) twinOf[edges[k].corner] = twinOf[edges[k + 1].corner];
+        for (std::size_t k = i; k + 1 < j; ++k)
+            twinOf[edges[k].corner] = twinOf[edges[k + 1].corner];
         twinOf[edges[j - 1].corner] = firstTwin;
         turned = true;
     }
@@ -1365,9 +1366,8 @@ void dropPartedPieces(Mesh& mesh, Surfaces& surfaces, std::vector<detail::Triang
     for (std::size_t t = 0; t < keep.size(); ++t) {
         if (keep[t]) kept[t] = next++;
     }
-    std::erase_if(crossing, [&](const detail::TrianglePair& p) {
-        return !keep[p.first] || !keep[p.second];
-    });
+    std::erase_if(crossing,
+                  [&](const detail::TrianglePair& p) { return !keep[p.first] || !keep[p.second]; });
     for (detail::TrianglePair& p : crossing) p = {kept[p.first], kept[p.second]};
     keepTriangles(mesh, keep);
     surfaces = surfacesOf(mesh);
@@ -1427,13 +1427,13 @@ std::vector<char> defectVertices(const Mesh& mesh, const Surfaces& surfaces,
     std::vector<char> defect(surfaces.vertices, 0);
     for (const auto& [s, t] : crossing) {
         for (const std::uint32_t triangle : {s, t}) {
-            for (std::size_t k = 0; k < 3; ++k) defect[surfaces.fan[3 * std::size_t{triangle} + k]] = 1;
+            for (std::size_t k = 0; k < 3; ++k)
+                defect[surfaces.fan[3 * std::size_t{triangle} + k]] = 1;
         }
     }
     for (const std::uint32_t v : sheetCornersToPart(mesh, surfaces)) defect[v] = 1;
     return defect;
 }
-
 
 // Re-union, step 8: moves the defect vertices (defectVertices) of the closed `surfaces` of
 // `mesh` by up to `jitter` of the extent (hash salt `salt`), where they may move
@@ -1563,9 +1563,8 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
         for (std::size_t round = 0; round < maxReunions && !clean(); ++round) {
             Mesh trial = *best;
             Surfaces surfaces = surfacesOf(trial);
-            if (!surfaces.closed ||
-                !moveDefectVertices(trial, surfaces, bestCrossing, move.jitter,
-                                    move.salt + kReunionSalt * (round + 1))) {
+            if (!surfaces.closed || !moveDefectVertices(trial, surfaces, bestCrossing, move.jitter,
+                                                        move.salt + kReunionSalt * (round + 1))) {
                 return;
             }
             SolidUnionReport tried;
@@ -1573,8 +1572,9 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
             TriangleSet uncrossed;
             std::size_t cut = 0;
             ++r.reunions;
-            if (unionAttempt(trial, surfaces, tried, 0.0, 0, std::numeric_limits<std::size_t>::max(),
-                             cut, uncrossed) != Outcome::done) {
+            if (unionAttempt(trial, surfaces, tried, 0.0, 0,
+                             std::numeric_limits<std::size_t>::max(), cut,
+                             uncrossed) != Outcome::done) {
                 return;
             }
             std::vector<detail::TrianglePair> left;
@@ -1619,8 +1619,8 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
 
 namespace ramus {
 
-bool unionClosedSurfaces(Mesh& /*mesh*/, SolidUnionReport* /*report*/,
-                         std::size_t /*maxAttempts*/, std::size_t /*maxReunions*/) {
+bool unionClosedSurfaces(Mesh& /*mesh*/, SolidUnionReport* /*report*/, std::size_t /*maxAttempts*/,
+                         std::size_t /*maxReunions*/) {
     throw Error(std::string(kSolidUnionMissing));
 }
 

@@ -252,7 +252,8 @@ TEST(SolidUnion, BoxesSharingTheVerticesOfAnEdgeAreTwoSheetsThere) {
     // The second box's use 7→3 first, so that the first box's 3→7 is paired with it.
     std::vector<std::array<std::uint32_t, 3>> triangles;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        triangles.push_back({mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
+        triangles.push_back(
+            {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
     }
     auto uses73 = [](const std::array<std::uint32_t, 3>& c) {
         for (int k = 0; k < 3; ++k) {

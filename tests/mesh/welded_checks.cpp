@@ -148,7 +148,8 @@ Topology analyzeTopology(const Mesh& mesh) {
         const std::uint32_t twin = cornerOfEdge.at(std::uint64_t{b} << 32 | a);  // at b
         fan[findRoot(fan, c)] = findRoot(fan, next(twin));
     }
-    std::vector<std::uint32_t> firstFan(mesh.positions.size(), std::numeric_limits<std::uint32_t>::max());
+    std::vector<std::uint32_t> firstFan(mesh.positions.size(),
+                                        std::numeric_limits<std::uint32_t>::max());
     std::vector<std::uint8_t> counted(mesh.positions.size(), 0);
     for (std::uint32_t c = 0; c < mesh.indices.size(); ++c) {
         const std::uint32_t a = id[mesh.indices[c]];
