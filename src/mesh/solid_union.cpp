@@ -1057,39 +1057,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     return Outcome::done;
 }
 
-// Triangles of `mesh` that are `suspect`, and those whose boxes meet a suspect one's: the
-// triangles that can take part in a pair with a suspect triangle. In order.
-std::vector<std::uint32_t> trianglesNear(const Mesh& mesh, const std::vector<char>& suspect) {
-    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
-    std::vector<Box> boxes;
-    boxes.reserve(mesh.triangleCount());
-    for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
-        CGAL::Bbox_3 box;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const Vec3f& p = mesh.positions[mesh.indices[3 * std::size_t{t} + k]];
-            box += CGAL::Bbox_3(p.x(), p.y(), p.z(), p.x(), p.y(), p.z());
-        }
-        boxes.emplace_back(box, t);
-    }
-    // Pointers, and the cutoff PMP::self_intersections uses: the boxes are not copied around.
-    std::vector<const Box*> all, suspects;
-    all.reserve(boxes.size());
-    for (const Box& b : boxes) {
-        all.push_back(&b);
-        if (suspect[b.info()]) suspects.push_back(&b);
-    }
-    std::vector<char> near = suspect;
-    CGAL::box_intersection_d(
-        suspects.begin(), suspects.end(), all.begin(), all.end(),
-        [&](const Box* a, const Box* b) { near[a->info()] = near[b->info()] = 1; },
-        std::ptrdiff_t{2000});
-    std::vector<std::uint32_t> triangles;
-    for (std::uint32_t t = 0; t < near.size(); ++t) {
-        if (near[t]) triangles.push_back(t);
-    }
-    return triangles;
-}
-
+#if defined(RAMUS_ENABLE_ASSERTS)
 // Pairs of the triangles `triangles` of the closed surfaces `surfaces` of `mesh` that intersect
 // other than in corners or edges they share (exact predicates on the float positions), as
 // triangle indices; false if some of them did not go into the surface mesh (left out).
@@ -1121,29 +1089,25 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
     for (const auto& [f, g] : faces) pairs.emplace_back(triangleOf[f.idx()], triangleOf[g.idx()]);
     return triangleOf.size() == triangles.size();
 }
+#endif
 
-// Pairs of triangles of the closed surfaces `mesh` that intersect other than in shared corners
-// or edges (exact predicates on the float positions, welded by position): what rounding the
-// cut positions to float left where surfaces only graze each other. In order.
-// `surfaces`: surfacesOf(mesh), closed (the result passed closedSurfaces). Triangles that are
-// not `suspect` (input triangles that crossed nothing, where they still are; after moves, those
-// that neither moved nor crossed) do not cross each other, so only the suspects and the
-// triangles near them are searched (tree_3d at 8 derivations: 65 k of 230 k; the whole mesh
-// took 0.4 s a search); an empty `suspect` searches the whole mesh.
+// Pairs of triangles of the closed surfaces `mesh` that intersect and share no position (exact
+// predicates on the float positions, welded by position): what rounding the cut positions to
+// float left where surfaces only graze each other. In order. `surfaces`: surfacesOf(mesh),
+// closed (the result passed closedSurfaces). Triangles that are not `suspect` (input triangles
+// that crossed nothing, where they still are; after moves, those that neither moved nor crossed)
+// do not cross each other, so only pairs with a suspect are tested: the boxes of the suspects
+// against all boxes (CGAL's box intersection), then the exact triangle test, on two cores. An
+// empty `suspect` tests the whole mesh. Until session 29 the triangles near the suspects went
+// through CGAL's self-intersection test on a surface mesh of them (the same pairs on tree_3d,
+// ABOP 1.24a and 2.8c), which builds that mesh and tests every pair of boxes, most of them
+// neighbours that share a corner; about 5–10 % of tree_3d's union in paired runs.
 std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces& surfaces,
                                                 const std::vector<char>& suspect) {
     const std::vector<std::uint32_t>& weld = surfaces.weld;
-    std::vector<std::uint32_t> all(mesh.triangleCount());
-    std::iota(all.begin(), all.end(), 0u);
-    std::vector<detail::TrianglePair> pairs;
-    // A part of the surfaces can pinch at a vertex where the whole does not, which a surface
-    // mesh does not take: then the whole is searched.
-    if (suspect.empty() ||
-        !intersectingPairs(mesh, surfaces, trianglesNear(mesh, suspect), pairs)) {
-        intersectingPairs(mesh, surfaces, all, pairs);
-    }
-    // Triangles that meet at a position split into two fan vertices (surfaces touching at a
-    // point) are reported too; they do not cross.
+    auto corner = [&](std::uint32_t t, std::size_t k) -> const Vec3f& {
+        return mesh.positions[mesh.indices[3 * std::size_t{t} + k]];
+    };
     auto shareAPosition = [&](std::uint32_t s, std::uint32_t t) {
         const std::uint32_t* a = &mesh.indices[3 * std::size_t{s}];
         const std::uint32_t* b = &mesh.indices[3 * std::size_t{t}];
@@ -1154,24 +1118,67 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
         }
         return false;
     };
-    auto crossingOf = [&](const std::vector<detail::TrianglePair>& found, bool withSuspectOnly) {
-        std::vector<detail::TrianglePair> crossing;
-        for (const auto& [s, t] : found) {
-            const bool apart = !suspect.empty() && !suspect[s] && !suspect[t];
-            if ((withSuspectOnly && apart) || shareAPosition(s, t)) continue;
-            crossing.emplace_back(std::min(s, t), std::max(s, t));
+    auto isSuspect = [&](std::uint32_t t) { return suspect.empty() || suspect[t]; };
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+    std::vector<Box> boxes;
+    boxes.reserve(mesh.triangleCount());
+    for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
+        CGAL::Bbox_3 box;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3f& p = corner(t, k);
+            box += CGAL::Bbox_3(p.x(), p.y(), p.z(), p.x(), p.y(), p.z());
         }
-        std::sort(crossing.begin(), crossing.end());
-        return crossing;
+        boxes.emplace_back(box, t);
+    }
+    std::vector<const Box*> all, suspects;
+    all.reserve(boxes.size());
+    for (const Box& b : boxes) {
+        all.push_back(&b);
+        if (isSuspect(b.info())) suspects.push_back(&b);
+    }
+    std::vector<detail::TrianglePair> candidates;
+    CGAL::box_intersection_d(
+        suspects.begin(), suspects.end(), all.begin(), all.end(),
+        [&](const Box* a, const Box* b) {
+            const std::uint32_t s = a->info(), t = b->info();
+            if (s == t || (isSuspect(t) && t < s) || shareAPosition(s, t)) return;
+            candidates.emplace_back(std::min(s, t), std::max(s, t));
+        },
+        std::ptrdiff_t{2000});
+    auto triangle = [&](std::uint32_t t) {
+        auto point = [&](std::size_t k) {
+            const Vec3f& p = corner(t, k);
+            return Point(p.x(), p.y(), p.z());
+        };
+        return Triangle(point(0), point(1), point(2));
     };
-    std::vector<detail::TrianglePair> crossing = crossingOf(pairs, true);
+    // A degenerate triangle (corners on a line: rounding leaves a few) is not tested, as in
+    // CGAL's self-intersection test, which reports it alone.
+    std::vector<char> crosses(candidates.size(), 0);
+    forEachOnCores(candidates.size(), [&](std::size_t i) {
+        const Triangle a = triangle(candidates[i].first), b = triangle(candidates[i].second);
+        crosses[i] = !a.is_degenerate() && !b.is_degenerate() && CGAL::do_intersect(a, b);
+    });
+    std::vector<detail::TrianglePair> crossing;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        if (crosses[i]) crossing.push_back(candidates[i]);
+    }
+    std::sort(crossing.begin(), crossing.end());
 #if defined(RAMUS_ENABLE_ASSERTS)
-    // The premise of the local search, checked in the tests: the whole mesh has no other pair
-    // (it failed in Release when GCC left the moved positions unrounded, CMakeLists.txt).
-    if (!suspect.empty()) {
-        std::vector<detail::TrianglePair> everyPair;
-        intersectingPairs(mesh, surfaces, all, everyPair);
-        RAMUS_ASSERT(crossingOf(everyPair, false) == crossing);
+    // The premise of the local search and the test itself, checked in the tests against CGAL's
+    // self-intersection test over the whole mesh (where every triangle went into its surface
+    // mesh): no other pair (the premise failed in Release when GCC left the moved positions
+    // unrounded, CMakeLists.txt).
+    std::vector<std::uint32_t> every(mesh.triangleCount());
+    std::iota(every.begin(), every.end(), 0u);
+    std::vector<detail::TrianglePair> everyPair;
+    if (intersectingPairs(mesh, surfaces, every, everyPair)) {
+        std::vector<detail::TrianglePair> reference;
+        for (const auto& [s, t] : everyPair) {
+            if (!shareAPosition(s, t)) reference.emplace_back(std::min(s, t), std::max(s, t));
+        }
+        std::sort(reference.begin(), reference.end());
+        RAMUS_ASSERT(reference == crossing);
     }
 #endif
     return crossing;
