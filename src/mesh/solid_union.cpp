@@ -12,14 +12,15 @@
 //    through one intersection edge — are cases the refinement rejects ("triple
 //    intersection"); after the move they are in general position, and the moved positions are
 //    floats, so untouched triangles keep exactly representable corners.
-// 2. Autorefine the triangles that intersect others (CGAL's exact self-intersection test finds
-//    them; on a tree a few percent of the mesh), the rest staying as they are. A visitor
+// 2. Autorefine the triangles that intersect others (the exact test of CGAL's self-intersection
+//    test on the pairs of overlapping boxes, box_overlaps.hpp, finds them; on a tree a few
+//    percent of the mesh), the rest staying as they are. A visitor
 //    carries each input triangle's index to the pieces it is cut into.
 // 3. Patches: connected regions between intersection edges. The winding number of the whole
 //    input is constant on each side of a patch; one ray from the centre of the patch's largest
 //    triangle, roughly along its normal, counts signed crossings (+1 leaving a surface): the
-//    patch bounds the union iff the count outside it is 0. Three slightly different rays vote,
-//    so a ray through an edge (counted twice) cannot flip the decision.
+//    patch bounds the union iff the count outside it is 0. A ray through an edge or corner
+//    (counted twice or not at all) is found by exact predicates and another ray is cast.
 // 4. Kept pieces become output triangles; corners interpolate the attributes of the input
 //    triangle the piece came from (corners that are input corners copy them exactly).
 // 5. Check: every edge welded by position is used as often in one direction as in the other
@@ -54,10 +55,10 @@
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <array>
+#include <boost/iterator/function_output_iterator.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -67,12 +68,13 @@
 #include <numeric>
 #include <optional>
 #include <span>
-#include <thread>
 #include <unordered_map>
 #include <vector>
 
+#include "box_overlaps.hpp"
 #include "crossing_repair.hpp"
 #include "fixed_hash.hpp"
+#include "on_cores.hpp"
 
 namespace ramus {
 namespace {
@@ -245,20 +247,34 @@ public:
     RayCrossings(const RayCrossings&) = delete;
     RayCrossings& operator=(const RayCrossings&) = delete;
 
-    // +1 for every triangle the ray from `origin` along `d` leaves (normal along d), -1 for
-    // every one it enters; triangle i left out where skip(i).
-    template <class Skip>
-    int count(const Point& origin, const Vector& d, Skip skip) const {
-        std::vector<Iterator> hits;
-        tree_.all_intersected_primitives(Kernel::Ray_3(origin, d), std::back_inserter(hits));
+    struct Count {
         int winding = 0;
-        for (const Iterator hit : hits) {
-            if (skip(static_cast<std::size_t>(hit - triangles_.cbegin()))) continue;
-            const Vector n = CGAL::cross_product(hit->vertex(1) - hit->vertex(0),
-                                                 hit->vertex(2) - hit->vertex(0));
-            winding += n * d > 0.0 ? 1 : -1;
-        }
-        return winding;
+        bool degenerate = false;
+    };
+
+    // +1 for every triangle the ray from `origin` along `d` leaves (`origin` on its inner side),
+    // -1 for every one it enters; triangle i left out where skip(i). Degenerate where the ray
+    // meets a triangle through an edge or a corner (counted by both sides or by neither) or
+    // starts in its plane (exact predicates): then the crossings need not be the winding number.
+    template <class Skip>
+    Count count(const Point& origin, const Vector& d, Skip skip) const {
+        const Kernel::Ray_3 ray(origin, d);
+        const Point& o = ray.source();
+        const Point q = ray.second_point();
+        Count result;
+        tree_.all_intersected_primitives(
+            ray, boost::make_function_output_iterator([&](Iterator hit) {
+                if (skip(static_cast<std::size_t>(hit - triangles_.cbegin()))) return;
+                const Point &a = hit->vertex(0), &b = hit->vertex(1), &c = hit->vertex(2);
+                const CGAL::Orientation side = CGAL::orientation(a, b, c, o);
+                if (side == CGAL::COPLANAR || CGAL::orientation(o, q, a, b) == CGAL::COPLANAR ||
+                    CGAL::orientation(o, q, b, c) == CGAL::COPLANAR ||
+                    CGAL::orientation(o, q, c, a) == CGAL::COPLANAR) {
+                    result.degenerate = true;
+                }
+                result.winding += side == CGAL::NEGATIVE ? 1 : -1;
+            }));
+        return result;
     }
 
 private:
@@ -268,39 +284,124 @@ private:
     CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree_;
 };
 
-// Calls task(i) for every i < n, on up to as many threads as the machine has cores (at most
-// 4), each thread taking every k-th i: for independent tasks whose results go to slot i, so the
-// result does not depend on the threads. The patch and piece votes of large unions took 10–20 %
-// of their time (ABOP 1.24b: 1.4 s an attempt on one core).
-// An exception from a task is passed on to the caller once every thread has finished.
-template <class Task>
-void forEachOnCores(std::size_t n, const Task& task) {
-    const std::size_t threads =
-        std::min<std::size_t>({std::max(1u, std::thread::hardware_concurrency()), 4, n / 64 + 1});
-    std::vector<std::exception_ptr> failures(threads);
-    auto share = [&](std::size_t w) {
-        try {
-            for (std::size_t i = w; i < n; i += threads) task(i);
-        } catch (...) {
-            failures[w] = std::current_exception();
-        }
-    };
-    std::vector<std::thread> workers;
-    for (std::size_t w = 1; w < threads; ++w) workers.emplace_back(share, w);
-    share(0);
-    for (std::thread& worker : workers) worker.join();
-    for (const std::exception_ptr& failure : failures) {
-        if (failure) std::rethrow_exception(failure);
+using detail::forEachOnCores;
+
+// Whether pred holds for the winding number that the rays ray(0), ray(1), … count
+// (RayCrossings::count): the first of them that meets no triangle degenerately decides (it
+// counts the winding number exactly); where the first kRayTries all do (not met on the
+// examples), the majority of the first three. Until session 30 every decision took two rays,
+// and a third where they disagreed.
+constexpr std::uint64_t kRayTries = 8;
+template <class Ray, class Pred>
+bool byRays(Ray ray, Pred pred) {
+    std::array<bool, 3> votes{};
+    for (std::uint64_t k = 0; k < kRayTries; ++k) {
+        const RayCrossings::Count count = ray(k);
+        if (!count.degenerate) return pred(count.winding);
+        if (k < votes.size()) votes[k] = pred(count.winding);
     }
+    return std::count(votes.begin(), votes.end(), true) >= 2;
 }
 
-// Whether at least two of the votes vote(0), vote(1), vote(2) are for: the third is asked only
-// where the first two disagree.
-template <class Vote>
-bool majorityOfThree(Vote vote) {
-    const bool first = vote(0);
-    const bool second = vote(1);
-    return first == second ? first : vote(2);
+// The box of each triangle t < triangles, whose corners are point(t, 0..2); empty where not
+// include(t).
+template <class PointOf, class Include>
+std::vector<detail::Box3> triangleBoxes(std::size_t triangles, PointOf point, Include include) {
+    std::vector<detail::Box3> boxes(triangles);
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        if (!include(t)) continue;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Point& p = point(t, k);
+            boxes[t].add({p.x(), p.y(), p.z()});
+        }
+    }
+    return boxes;
+}
+
+// The pairs (s, t), s < t, of triangles whose `boxes` overlap (detail::overlappingBoxes), at
+// least one of them `suspect` (every pair where that is empty), for which test(s, t) holds,
+// tested on two cores; sorted.
+template <class Test>
+std::vector<detail::TrianglePair> overlappingPairsWhere(const std::vector<detail::Box3>& boxes,
+                                                        const std::vector<char>& suspect,
+                                                        Test test) {
+    const std::vector<detail::BoxPair> candidates = detail::overlappingBoxes(boxes, suspect);
+    std::vector<char> passes(candidates.size(), 0);
+    forEachOnCores(candidates.size(), [&](std::size_t i) {
+        passes[i] = test(candidates[i].first, candidates[i].second);
+    });
+    std::vector<detail::TrianglePair> pairs;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        if (passes[i]) pairs.push_back(candidates[i]);
+    }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+// Whether the triangles a and b (surface vertices, at `points`) of closed surfaces intersect
+// other than in the corners or the edge they share: as CGAL's self-intersection test
+// (do_faces_intersect in Polygon_mesh_processing/self_intersections.h), triangles that share an
+// edge intersect where they fold onto each other (coplanar, on one side of it), triangles that
+// share one corner where the edge opposite it in one meets the other.
+bool trianglesIntersect(const std::vector<Point>& points, const std::uint32_t* a,
+                        const std::uint32_t* b) {
+    int shared = 0, sharedInA = 0, sharedInB = 0;
+    std::array<bool, 3> aShares{}, bShares{};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            if (a[i] != b[j]) continue;
+            ++shared;
+            aShares[static_cast<std::size_t>(i)] = bShares[static_cast<std::size_t>(j)] = true;
+            sharedInA = i;
+            sharedInB = j;
+        }
+    }
+    auto point = [&](const std::uint32_t* t, int k) -> const Point& { return points[t[k % 3]]; };
+    if (shared == 3) return true;  // two triangles on the same corners lie on each other
+    if (shared == 2) {
+        auto unshared = [](const std::array<bool, 3>& shares) {
+            return static_cast<int>(std::find(shares.begin(), shares.end(), false) -
+                                    shares.begin());
+        };
+        const int ra = unshared(aShares), rb = unshared(bShares);
+        const Point& p = point(a, ra + 1);
+        const Point& q = point(a, ra + 2);
+        return CGAL::coplanar(p, q, point(a, ra), point(b, rb)) &&
+               CGAL::coplanar_orientation(p, q, point(a, ra), point(b, rb)) == CGAL::POSITIVE;
+    }
+    const Triangle ta(point(a, 0), point(a, 1), point(a, 2));
+    const Triangle tb(point(b, 0), point(b, 1), point(b, 2));
+    if (shared == 1) {
+        return CGAL::do_intersect(
+                   ta, Kernel::Segment_3(point(b, sharedInB + 1), point(b, sharedInB + 2))) ||
+               CGAL::do_intersect(
+                   tb, Kernel::Segment_3(point(a, sharedInA + 1), point(a, sharedInA + 2)));
+    }
+    return CGAL::do_intersect(ta, tb);
+}
+
+// Per triangle of closed surfaces (corners: the surface vertices `fan`, at `points`): whether
+// the refinement has to cut it, being degenerate (corners on a line) or intersecting another
+// triangle other than in the corners or edge they share (trianglesIntersect): what CGAL's
+// self-intersection test finds, on two cores (on one it was a quarter of tree_3d's union,
+// 0.36 s of 1.4 s, session 30).
+std::vector<char> intersectingTriangles(const std::vector<Point>& points,
+                                        const std::vector<std::uint32_t>& fan) {
+    const std::size_t triangles = fan.size() / 3;
+    auto point = [&](std::uint32_t t, std::size_t k) -> const Point& {
+        return points[fan[3 * std::size_t{t} + k]];
+    };
+    std::vector<char> intersecting(triangles, 0);
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        intersecting[t] = CGAL::collinear(point(t, 0), point(t, 1), point(t, 2));
+    }
+    const auto pairs = overlappingPairsWhere(
+        triangleBoxes(triangles, point, [&](std::uint32_t t) { return !intersecting[t]; }), {},
+        [&](std::uint32_t s, std::uint32_t t) {
+            return trianglesIntersect(points, &fan[3 * std::size_t{s}], &fan[3 * std::size_t{t}]);
+        });
+    for (const auto& [s, t] : pairs) intersecting[s] = intersecting[t] = 1;
+    return intersecting;
 }
 
 // A separate closed piece of the result with less than this fraction of the largest piece's
@@ -316,7 +417,7 @@ constexpr double kSliverVolume = 1e-6;
 // overlapping tubes enclose without covering it, plus any piece inside such a pocket. A pocket's
 // surface has negative volume (summed about its own first corner, so that tiny pockets far from
 // the origin keep their sign); a piece inside one has winding number ≥ 1 with respect to the
-// rest once the pockets are gone (three rays vote, as for the patches). Both are removed: the
+// rest once the pockets are gone (a ray, as for the patches: byRays). Both are removed: the
 // pockets are filled, as hidden inner geometry is nothing an engine or a printer wants.
 // Slivers (kSliverVolume) are removed too.
 std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_t>& weld,
@@ -365,13 +466,14 @@ std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_
             if (!keepComponent[c]) return;
             const std::size_t t = firstTriangle[c];
             const Vec3 centre = (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0;
-            enclosed[c] = majorityOfThree([&](std::uint64_t ray) {
-                const std::uint64_t seed = 0xC0FFEE + 3 * (3 * std::uint64_t{c} + ray);
+            auto ray = [&](std::uint64_t k) {
+                const std::uint64_t seed = 0xC0FFEE + 3 * (3 * std::uint64_t{c} + k);
                 const Vector d(detail::hashUnit(seed), detail::hashUnit(seed + 1),
                                detail::hashUnit(seed + 2));
                 return rays.count(Point(centre.x(), centre.y(), centre.z()), d,
-                                  [&](std::size_t hit) { return solidComponent[hit] == c; }) >= 1;
-            });
+                                  [&](std::size_t hit) { return solidComponent[hit] == c; });
+            };
+            enclosed[c] = byRays(ray, [](int winding) { return winding >= 1; });
         });
         for (std::uint32_t c = 0; c < count; ++c) {
             if (enclosed[c]) {
@@ -459,8 +561,10 @@ SurfaceMesh canonicalMesh(RefinedSoup soup) {
     return out;
 }
 
+#if defined(RAMUS_ENABLE_ASSERTS)
 // Per face of `m`: whether it intersects another face other than in the corners or edge they
-// share (exact predicates): the faces the refinement cuts.
+// share (exact predicates): the faces the refinement cuts. The reference for
+// intersectingTriangles.
 std::vector<char> intersectingFaces(const SurfaceMesh& m) {
     std::vector<std::pair<FaceIndex, FaceIndex>> pairs;
     PMP::self_intersections(m, std::back_inserter(pairs));
@@ -468,6 +572,7 @@ std::vector<char> intersectingFaces(const SurfaceMesh& m) {
     for (const auto& [f, g] : pairs) intersecting[f.idx()] = intersecting[g.idx()] = 1;
     return intersecting;
 }
+#endif
 
 // Cuts the faces of `m` that intersect others (`intersecting`) along the intersections, the
 // other faces staying as they are: only the intersecting faces go to the autorefinement, whose
@@ -549,7 +654,7 @@ const char* refineIntersections(const SurfaceMesh& m,
     return nullptr;
 }
 
-// Per patch: whether it bounds the union (winding 0 just outside it, by a vote of 3 rays).
+// Per patch: whether it bounds the union (winding 0 just outside it: byRays).
 std::vector<char> classifyPatches(const SurfaceMesh& m,
                                   const SurfaceMesh::Property_map<FaceIndex, std::size_t>& patch,
                                   std::size_t patches) {
@@ -579,15 +684,15 @@ std::vector<char> classifyPatches(const SurfaceMesh& m,
     RayCrossings rays(std::move(triangles));
     std::vector<char> keep(patches, 0);
     forEachOnCores(patches, [&](std::size_t p) {
-        keep[p] = majorityOfThree([&](std::uint64_t ray) {
-            const std::uint64_t seed = 3 * (3 * p + ray);
+        // The winding number just outside the patch's largest triangle, itself left out.
+        auto ray = [&](std::uint64_t k) {
+            const std::uint64_t seed = 3 * (3 * p + k);
             const Vector d =
                 normals[p] + 0.1 * Vector(detail::hashUnit(seed), detail::hashUnit(seed + 1),
                                           detail::hashUnit(seed + 2));
-            // The winding number just outside the patch's largest triangle, itself left out.
-            return rays.count(centres[p], d, [&](std::size_t hit) { return hit == largest[p]; }) ==
-                   0;
-        });
+            return rays.count(centres[p], d, [&](std::size_t hit) { return hit == largest[p]; });
+        };
+        keep[p] = byRays(ray, [](int winding) { return winding == 0; });
     });
     return keep;
 }
@@ -972,7 +1077,11 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     }
 
     // 2. Cut the triangles along their intersections.
-    const std::vector<char> intersecting = intersectingFaces(m);
+    std::vector<Point> points;
+    points.reserve(vertices);
+    for (const Vec3& p : movedVertex) points.emplace_back(p.x(), p.y(), p.z());
+    const std::vector<char> intersecting = intersectingTriangles(points, fan);
+    RAMUS_ASSERT(intersecting == intersectingFaces(m));
     cut = static_cast<std::size_t>(std::count(intersecting.begin(), intersecting.end(), 1));
     if (cut > cutLimit) return Outcome::postponed;
     if (cut == 0) {
@@ -1118,52 +1227,22 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
         }
         return false;
     };
-    auto isSuspect = [&](std::uint32_t t) { return suspect.empty() || suspect[t]; };
-    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
-    std::vector<Box> boxes;
-    boxes.reserve(mesh.triangleCount());
-    for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
-        CGAL::Bbox_3 box;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const Vec3f& p = corner(t, k);
-            box += CGAL::Bbox_3(p.x(), p.y(), p.z(), p.x(), p.y(), p.z());
-        }
-        boxes.emplace_back(box, t);
-    }
-    std::vector<const Box*> all, suspects;
-    all.reserve(boxes.size());
-    for (const Box& b : boxes) {
-        all.push_back(&b);
-        if (isSuspect(b.info())) suspects.push_back(&b);
-    }
-    std::vector<detail::TrianglePair> candidates;
-    CGAL::box_intersection_d(
-        suspects.begin(), suspects.end(), all.begin(), all.end(),
-        [&](const Box* a, const Box* b) {
-            const std::uint32_t s = a->info(), t = b->info();
-            if (s == t || (isSuspect(t) && t < s) || shareAPosition(s, t)) return;
-            candidates.emplace_back(std::min(s, t), std::max(s, t));
-        },
-        std::ptrdiff_t{2000});
+    auto point = [&](std::uint32_t t, std::size_t k) {
+        const Vec3f& p = corner(t, k);
+        return Point(p.x(), p.y(), p.z());
+    };
     auto triangle = [&](std::uint32_t t) {
-        auto point = [&](std::size_t k) {
-            const Vec3f& p = corner(t, k);
-            return Point(p.x(), p.y(), p.z());
-        };
-        return Triangle(point(0), point(1), point(2));
+        return Triangle(point(t, 0), point(t, 1), point(t, 2));
     };
     // A degenerate triangle (corners on a line: rounding leaves a few) is not tested, as in
     // CGAL's self-intersection test, which reports it alone.
-    std::vector<char> crosses(candidates.size(), 0);
-    forEachOnCores(candidates.size(), [&](std::size_t i) {
-        const Triangle a = triangle(candidates[i].first), b = triangle(candidates[i].second);
-        crosses[i] = !a.is_degenerate() && !b.is_degenerate() && CGAL::do_intersect(a, b);
-    });
-    std::vector<detail::TrianglePair> crossing;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-        if (crosses[i]) crossing.push_back(candidates[i]);
-    }
-    std::sort(crossing.begin(), crossing.end());
+    const std::vector<detail::TrianglePair> crossing = overlappingPairsWhere(
+        triangleBoxes(mesh.triangleCount(), point, [](std::uint32_t) { return true; }), suspect,
+        [&](std::uint32_t s, std::uint32_t t) {
+            if (shareAPosition(s, t)) return false;
+            const Triangle a = triangle(s), b = triangle(t);
+            return !a.is_degenerate() && !b.is_degenerate() && CGAL::do_intersect(a, b);
+        });
 #if defined(RAMUS_ENABLE_ASSERTS)
     // The premise of the local search and the test itself, checked in the tests against CGAL's
     // self-intersection test over the whole mesh (where every triangle went into its surface

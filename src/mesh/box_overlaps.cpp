@@ -1,0 +1,259 @@
+// Overlapping boxes by a hierarchy of uniform grids (box_overlaps.hpp).
+#include "box_overlaps.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "on_cores.hpp"
+
+namespace ramus::detail {
+namespace {
+
+// Level 0's cells are this many times as wide as the median box's largest side; a level takes
+// the boxes up to kLevelSpan of its cells wide.
+constexpr double kCellScale = 2.0;
+constexpr double kLevelSpan = 2.0;
+// Cell coordinates take 19 bits per axis and the level 5 in a cell's key.
+constexpr int kAxisBits = 19;
+constexpr int kLevelBits = 5;
+constexpr std::int64_t kAxisCells = std::int64_t{1} << kAxisBits;
+constexpr int kLevels = 1 << kLevelBits;
+// Buckets of the hash table handled by one task, boxes by one task of the cross-level search.
+constexpr std::size_t kBucketsPerTask = 4096;
+constexpr std::size_t kBoxesPerTask = 1024;
+
+using Cell = std::array<std::int64_t, 3>;
+using Entry = std::pair<std::uint64_t, std::uint32_t>;  // (cell key, box)
+
+std::uint64_t mixed(std::uint64_t x) {
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
+// Grids over the boxes, one per level. Level 0's cells are twice as wide as the median box's
+// largest side and it takes the boxes up to kLevelSpan cells wide (nearly all of a mesh's
+// triangles, each meeting a few cells); the next level does the same with the boxes left, and
+// so on: a level's median box is wider than kLevelSpan cells of every level below, so its cells
+// are wider than twice any box of those, which meets at most 8 of them. Each level takes at
+// least half of the boxes left, so there are few (tree_3d 2, a flat plant's leaves 4–5).
+class BoxHierarchy {
+public:
+    // Over the non-empty `boxes`; none: not valid.
+    explicit BoxHierarchy(const std::vector<Box3>& boxes) : level_(boxes.size(), -1) {
+        std::array<double, 3> top{};
+        origin_.fill(std::numeric_limits<double>::infinity());
+        top.fill(-std::numeric_limits<double>::infinity());
+        std::vector<std::uint32_t> left;  // boxes without a level yet
+        for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+            if (boxes[i].empty()) continue;
+            for (int d = 0; d < 3; ++d) {
+                origin_[d] = std::min(origin_[d], boxes[i].lo[d]);
+                top[d] = std::max(top[d], boxes[i].hi[d]);
+            }
+            left.push_back(i);
+        }
+        double extent = 0.0;
+        for (int d = 0; d < 3; ++d) extent = std::max(extent, top[d] - origin_[d]);
+        std::vector<double> sides;
+        for (int k = 0; k < kLevels && !left.empty(); ++k) {
+            sides.clear();
+            for (const std::uint32_t i : left) sides.push_back(largestSide(boxes[i]));
+            auto middle = sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2);
+            std::nth_element(sides.begin(), middle, sides.end());
+            double width =
+                std::max(kCellScale * *middle, extent / static_cast<double>(kAxisCells - 1));
+            if (!(width > 0.0)) width = 1.0;  // every box a point, all at one place
+            width_[static_cast<std::size_t>(k)] = width;
+            std::erase_if(left, [&](std::uint32_t i) {
+                if (k + 1 < kLevels && largestSide(boxes[i]) > kLevelSpan * width) return false;
+                level_[i] = k;
+                return true;
+            });
+        }
+    }
+
+    bool valid() const { return width_[0] > 0.0; }
+    // The level of box i; -1 where it is empty.
+    int level(std::size_t i) const { return level_[i]; }
+
+    Cell cellOf(const std::array<double, 3>& p, int level) const {
+        Cell c;
+        for (int d = 0; d < 3; ++d) {
+            const double x =
+                std::floor((p[d] - origin_[d]) / width_[static_cast<std::size_t>(level)]);
+            c[d] = std::clamp(static_cast<std::int64_t>(x), std::int64_t{0}, kAxisCells - 1);
+        }
+        return c;
+    }
+    static std::uint64_t keyOf(const Cell& c, int level) {
+        return static_cast<std::uint64_t>(level) << (3 * kAxisBits) |
+               static_cast<std::uint64_t>(c[0]) << (2 * kAxisBits) |
+               static_cast<std::uint64_t>(c[1]) << kAxisBits | static_cast<std::uint64_t>(c[2]);
+    }
+    // Calls visit(key) for every cell of `level` that box b meets.
+    template <class Visit>
+    void forCells(const Box3& b, int level, Visit visit) const {
+        const Cell lo = cellOf(b.lo, level), hi = cellOf(b.hi, level);
+        for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
+            for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+                for (std::int64_t z = lo[2]; z <= hi[2]; ++z) visit(keyOf({x, y, z}, level));
+            }
+        }
+    }
+    // Whether the cell `key` of `level` holds the lowest corner of the intersection of the
+    // overlapping a and b: of all the cells of that level both meet, the one that reports them.
+    bool reports(std::uint64_t key, int level, const Box3& a, const Box3& b) const {
+        std::array<double, 3> corner;
+        for (int d = 0; d < 3; ++d) corner[d] = std::max(a.lo[d], b.lo[d]);
+        return keyOf(cellOf(corner, level), level) == key;
+    }
+
+private:
+    static double largestSide(const Box3& b) {
+        return std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+    }
+
+    std::array<double, 3> origin_{};
+    std::array<double, kLevels> width_{};  // of the cells of each level
+    std::vector<int> level_;
+};
+
+// The cells of all levels hashed into buckets: the entries (cell key, box) sorted by bucket and
+// within a bucket by key.
+class CellTable {
+public:
+    CellTable(const std::vector<Box3>& boxes, const BoxHierarchy& levels) {
+        const auto n = static_cast<std::uint32_t>(boxes.size());
+        auto forEntries = [&](auto visit) {
+            for (std::uint32_t i = 0; i < n; ++i) {
+                if (levels.level(i) < 0) continue;
+                levels.forCells(boxes[i], levels.level(i),
+                                [&](std::uint64_t key) { visit(key, i); });
+            }
+        };
+        std::size_t entries = 0;
+        forEntries([&](std::uint64_t, std::uint32_t) { ++entries; });
+        buckets_ = 1;
+        while (buckets_ < entries) buckets_ *= 2;
+        first_.assign(buckets_ + 1, 0);
+        forEntries([&](std::uint64_t key, std::uint32_t) { ++first_[bucketOf(key) + 1]; });
+        for (std::size_t b = 0; b < buckets_; ++b) first_[b + 1] += first_[b];
+        entries_.resize(entries);
+        std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
+        forEntries([&](std::uint64_t key, std::uint32_t i) {
+            entries_[next[bucketOf(key)]++] = {key, i};
+        });
+        forEachOnCores(buckets_, [&](std::size_t b) {
+            std::sort(entries_.begin() + first_[b], entries_.begin() + first_[b + 1]);
+        });
+    }
+
+    std::size_t buckets() const { return buckets_; }
+    // The entries of bucket b.
+    std::pair<const Entry*, const Entry*> bucket(std::size_t b) const {
+        return {entries_.data() + first_[b], entries_.data() + first_[b + 1]};
+    }
+    // The entries of the cell `key`.
+    std::pair<const Entry*, const Entry*> cell(std::uint64_t key) const {
+        const auto [begin, end] = bucket(bucketOf(key));
+        const Entry* from = std::lower_bound(begin, end, Entry{key, 0});
+        const Entry* to = from;
+        while (to != end && to->first == key) ++to;
+        return {from, to};
+    }
+
+private:
+    std::size_t bucketOf(std::uint64_t key) const { return mixed(key) & (buckets_ - 1); }
+
+    std::size_t buckets_ = 1;
+    std::vector<std::uint32_t> first_;
+    std::vector<Entry> entries_;
+};
+
+}  // namespace
+
+std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
+                                      const std::vector<char>& suspect) {
+    auto isSuspect = [&](std::uint32_t i) { return suspect.empty() || suspect[i] != 0; };
+    const BoxHierarchy levels(boxes);
+    if (!levels.valid()) return {};
+    const CellTable table(boxes, levels);
+    const auto n = static_cast<std::uint32_t>(boxes.size());
+    std::array<bool, kLevels> used{};
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (levels.level(i) >= 0) used[static_cast<std::size_t>(levels.level(i))] = true;
+    }
+    auto report = [&](std::vector<BoxPair>& out, std::uint64_t key, int level, std::uint32_t i,
+                      std::uint32_t j) {
+        if (boxes[i].overlaps(boxes[j]) && levels.reports(key, level, boxes[i], boxes[j])) {
+            out.emplace_back(std::min(i, j), std::max(i, j));
+        }
+    };
+
+    // Boxes of one level, in each cell of it (a bucket may hold several cells).
+    const std::size_t bucketTasks = (table.buckets() + kBucketsPerTask - 1) / kBucketsPerTask;
+    const std::size_t boxTasks = (n + kBoxesPerTask - 1) / kBoxesPerTask;
+    std::vector<std::vector<BoxPair>> found(bucketTasks + boxTasks);
+    forEachOnCores(bucketTasks, [&](std::size_t task) {
+        std::vector<Box3> local;  // the boxes of one cell, side by side
+        const std::size_t end = std::min(table.buckets(), (task + 1) * kBucketsPerTask);
+        for (std::size_t b = task * kBucketsPerTask; b < end; ++b) {
+            const auto [begin, stop] = table.bucket(b);
+            for (const Entry* s = begin; s != stop;) {
+                const Entry* e = s + 1;
+                while (e != stop && e->first == s->first) ++e;
+                if (e - s > 1) {
+                    const int level = levels.level(s->second);
+                    local.clear();
+                    for (const Entry* a = s; a != e; ++a) local.push_back(boxes[a->second]);
+                    // Every suspect with every other box, a pair of suspects once.
+                    for (const Entry* a = s; a != e; ++a) {
+                        if (!isSuspect(a->second)) continue;
+                        const Box3& boxA = local[static_cast<std::size_t>(a - s)];
+                        for (const Entry* c = s; c != e; ++c) {
+                            if (c == a || (c < a && isSuspect(c->second))) continue;
+                            const Box3& boxC = local[static_cast<std::size_t>(c - s)];
+                            if (boxA.overlaps(boxC) &&
+                                levels.reports(s->first, level, boxA, boxC)) {
+                                found[task].emplace_back(std::min(a->second, c->second),
+                                                         std::max(a->second, c->second));
+                            }
+                        }
+                    }
+                }
+                s = e;
+            }
+        }
+    });
+    // Each box with the boxes of the levels above its own, in the cells of theirs it meets.
+    forEachOnCores(boxTasks, [&](std::size_t task) {
+        std::vector<BoxPair>& out = found[bucketTasks + task];
+        const std::uint32_t end =
+            static_cast<std::uint32_t>(std::min<std::size_t>(n, (task + 1) * kBoxesPerTask));
+        for (auto i = static_cast<std::uint32_t>(task * kBoxesPerTask); i < end; ++i) {
+            const int own = levels.level(i);
+            if (own < 0) continue;
+            for (int level = own + 1; level < kLevels; ++level) {
+                if (!used[static_cast<std::size_t>(level)]) continue;
+                levels.forCells(boxes[i], level, [&](std::uint64_t key) {
+                    const auto [from, to] = table.cell(key);
+                    for (const Entry* e = from; e != to; ++e) {
+                        if (isSuspect(i) || isSuspect(e->second)) {
+                            report(out, key, level, i, e->second);
+                        }
+                    }
+                });
+            }
+        }
+    });
+    std::size_t total = 0;
+    for (const auto& f : found) total += f.size();
+    std::vector<BoxPair> pairs;
+    pairs.reserve(total);
+    for (const auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
+    return pairs;
+}
+
+}  // namespace ramus::detail
