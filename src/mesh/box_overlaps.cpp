@@ -120,15 +120,17 @@ private:
     std::vector<int> level_;
 };
 
-// The cells of all levels hashed into buckets: the entries (cell key, box) sorted by bucket and
-// within a bucket by key.
+// The cells of all levels that the boxes i with include(i) meet on their level, hashed into
+// buckets: the entries (cell key, box) sorted by bucket and within a bucket by key.
 class CellTable {
 public:
-    CellTable(const std::vector<Box3>& boxes, const BoxHierarchy& levels) {
+    template <class Include>
+    CellTable(const std::vector<Box3>& boxes, const BoxHierarchy& levels, Include include) {
         const auto n = static_cast<std::uint32_t>(boxes.size());
         auto forEntries = [&](auto visit) {
             for (std::uint32_t i = 0; i < n; ++i) {
-                if (levels.level(i) < 0) continue;
+                if (levels.level(i) < 0 || !include(i)) continue;
+                used_[static_cast<std::size_t>(levels.level(i))] = true;
                 levels.forCells(boxes[i], levels.level(i),
                                 [&](std::uint64_t key) { visit(key, i); });
             }
@@ -151,6 +153,8 @@ public:
     }
 
     std::size_t buckets() const { return buckets_; }
+    // Whether a box of `level` has entries.
+    bool has(int level) const { return used_[static_cast<std::size_t>(level)]; }
     // The entries of bucket b.
     std::pair<const Entry*, const Entry*> bucket(std::size_t b) const {
         return {entries_.data() + first_[b], entries_.data() + first_[b + 1]};
@@ -168,85 +172,32 @@ private:
     std::size_t bucketOf(std::uint64_t key) const { return mixed(key) & (buckets_ - 1); }
 
     std::size_t buckets_ = 1;
+    std::array<bool, kLevels> used_{};
     std::vector<std::uint32_t> first_;
     std::vector<Entry> entries_;
 };
 
-}  // namespace
-
-std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
-                                      const std::vector<char>& suspect) {
-    auto isSuspect = [&](std::uint32_t i) { return suspect.empty() || suspect[i] != 0; };
-    const BoxHierarchy levels(boxes);
-    if (!levels.valid()) return {};
-    const CellTable table(boxes, levels);
-    const auto n = static_cast<std::uint32_t>(boxes.size());
-    std::array<bool, kLevels> used{};
-    for (std::uint32_t i = 0; i < n; ++i) {
-        if (levels.level(i) >= 0) used[static_cast<std::size_t>(levels.level(i))] = true;
-    }
-    auto report = [&](std::vector<BoxPair>& out, std::uint64_t key, int level, std::uint32_t i,
-                      std::uint32_t j) {
-        if (boxes[i].overlaps(boxes[j]) && levels.reports(key, level, boxes[i], boxes[j])) {
-            out.emplace_back(std::min(i, j), std::max(i, j));
-        }
-    };
-
-    // Boxes of one level, in each cell of it (a bucket may hold several cells).
-    const std::size_t bucketTasks = (table.buckets() + kBucketsPerTask - 1) / kBucketsPerTask;
-    const std::size_t boxTasks = (n + kBoxesPerTask - 1) / kBoxesPerTask;
-    std::vector<std::vector<BoxPair>> found(bucketTasks + boxTasks);
-    forEachOnCores(bucketTasks, [&](std::size_t task) {
-        std::vector<Box3> local;  // the boxes of one cell, side by side
-        const std::size_t end = std::min(table.buckets(), (task + 1) * kBucketsPerTask);
-        for (std::size_t b = task * kBucketsPerTask; b < end; ++b) {
-            const auto [begin, stop] = table.bucket(b);
-            for (const Entry* s = begin; s != stop;) {
-                const Entry* e = s + 1;
-                while (e != stop && e->first == s->first) ++e;
-                if (e - s > 1) {
-                    const int level = levels.level(s->second);
-                    local.clear();
-                    for (const Entry* a = s; a != e; ++a) local.push_back(boxes[a->second]);
-                    // Every suspect with every other box, a pair of suspects once.
-                    for (const Entry* a = s; a != e; ++a) {
-                        if (!isSuspect(a->second)) continue;
-                        const Box3& boxA = local[static_cast<std::size_t>(a - s)];
-                        for (const Entry* c = s; c != e; ++c) {
-                            if (c == a || (c < a && isSuspect(c->second))) continue;
-                            const Box3& boxC = local[static_cast<std::size_t>(c - s)];
-                            if (boxA.overlaps(boxC) &&
-                                levels.reports(s->first, level, boxA, boxC)) {
-                                found[task].emplace_back(std::min(a->second, c->second),
-                                                         std::max(a->second, c->second));
-                            }
-                        }
-                    }
-                }
-                s = e;
-            }
-        }
+// Calls visit(key, e) for every entry e of `table` in the cells of `level` that box b meets.
+template <class Visit>
+void forEntriesMet(const Box3& b, int level, const BoxHierarchy& levels, const CellTable& table,
+                   Visit visit) {
+    levels.forCells(b, level, [&](std::uint64_t key) {
+        const auto [from, to] = table.cell(key);
+        for (const Entry* e = from; e != to; ++e) visit(key, e->second);
     });
-    // Each box with the boxes of the levels above its own, in the cells of theirs it meets.
-    forEachOnCores(boxTasks, [&](std::size_t task) {
-        std::vector<BoxPair>& out = found[bucketTasks + task];
-        const std::uint32_t end =
-            static_cast<std::uint32_t>(std::min<std::size_t>(n, (task + 1) * kBoxesPerTask));
-        for (auto i = static_cast<std::uint32_t>(task * kBoxesPerTask); i < end; ++i) {
-            const int own = levels.level(i);
-            if (own < 0) continue;
-            for (int level = own + 1; level < kLevels; ++level) {
-                if (!used[static_cast<std::size_t>(level)]) continue;
-                levels.forCells(boxes[i], level, [&](std::uint64_t key) {
-                    const auto [from, to] = table.cell(key);
-                    for (const Entry* e = from; e != to; ++e) {
-                        if (isSuspect(i) || isSuspect(e->second)) {
-                            report(out, key, level, i, e->second);
-                        }
-                    }
-                });
-            }
-        }
+}
+
+// The pairs in tasks of kBoxesPerTask boxes: task(first, end, out) for the boxes first..end-1,
+// out getting its pairs; concatenated in order.
+template <class Task>
+std::vector<BoxPair> pairsByBoxes(std::size_t n, Task task,
+                                  std::vector<std::vector<BoxPair>> found = {}) {
+    const std::size_t tasks = (n + kBoxesPerTask - 1) / kBoxesPerTask;
+    const std::size_t before = found.size();
+    found.resize(before + tasks);
+    forEachOnCores(tasks, [&](std::size_t t) {
+        task(static_cast<std::uint32_t>(t * kBoxesPerTask),
+             static_cast<std::uint32_t>(std::min(n, (t + 1) * kBoxesPerTask)), found[before + t]);
     });
     std::size_t total = 0;
     for (const auto& f : found) total += f.size();
@@ -254,6 +205,107 @@ std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
     pairs.reserve(total);
     for (const auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
     return pairs;
+}
+
+// Every pair of overlapping boxes: the pairs within each cell of each level, then each box
+// with the boxes of the levels above its own in the cells of theirs it meets.
+std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHierarchy& levels) {
+    const CellTable table(boxes, levels, [](std::uint32_t) { return true; });
+    const std::size_t bucketTasks = (table.buckets() + kBucketsPerTask - 1) / kBucketsPerTask;
+    std::vector<std::vector<BoxPair>> found(bucketTasks);
+    forEachOnCores(bucketTasks, [&](std::size_t task) {
+        std::vector<Box3> local;  // the boxes of one cell, side by side
+        const std::size_t end = std::min(table.buckets(), (task + 1) * kBucketsPerTask);
+        for (std::size_t b = task * kBucketsPerTask; b < end; ++b) {
+            const auto [begin, stop] = table.bucket(b);
+            for (const Entry* s = begin; s != stop;) {  // a bucket may hold several cells
+                const Entry* e = s + 1;
+                while (e != stop && e->first == s->first) ++e;
+                const int level = levels.level(s->second);
+                local.clear();
+                for (const Entry* a = s; a != e; ++a) local.push_back(boxes[a->second]);
+                for (std::size_t a = 0; a < local.size(); ++a) {
+                    for (std::size_t c = a + 1; c < local.size(); ++c) {
+                        if (local[a].overlaps(local[c]) &&
+                            levels.reports(s->first, level, local[a], local[c])) {
+                            found[task].emplace_back(s[a].second, s[c].second);  // sorted
+                        }
+                    }
+                }
+                s = e;
+            }
+        }
+    });
+    return pairsByBoxes(
+        boxes.size(),
+        [&](std::uint32_t first, std::uint32_t end, std::vector<BoxPair>& out) {
+            for (std::uint32_t i = first; i < end; ++i) {
+                for (int level = levels.level(i) + 1; levels.level(i) >= 0 && level < kLevels;
+                     ++level) {
+                    if (!table.has(level)) continue;
+                    forEntriesMet(boxes[i], level, levels, table,
+                                  [&](std::uint64_t key, std::uint32_t j) {
+                                      if (boxes[i].overlaps(boxes[j]) &&
+                                          levels.reports(key, level, boxes[i], boxes[j])) {
+                                          out.emplace_back(std::min(i, j), std::max(i, j));
+                                      }
+                                  });
+                }
+            }
+        },
+        std::move(found));
+}
+
+// The pairs of overlapping boxes with a suspect among them, by looking up: every box looks up
+// the suspects of its own level and those above in a table of the suspects alone, and every
+// suspect the other boxes of the levels above its own. Where there are few suspects (the
+// crossing search after moving a few corners) no table of all boxes is built.
+std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
+                                         const std::vector<char>& suspect,
+                                         const BoxHierarchy& levels) {
+    int lowest = kLevels;  // the lowest level of a suspect
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+        if (suspect[i] && levels.level(i) >= 0) lowest = std::min(lowest, levels.level(i));
+    }
+    const CellTable suspects(boxes, levels, [&](std::uint32_t i) { return suspect[i] != 0; });
+    const CellTable above(boxes, levels, [&](std::uint32_t i) {
+        return suspect[i] == 0 && levels.level(i) > lowest;
+    });
+    return pairsByBoxes(
+        boxes.size(), [&](std::uint32_t first, std::uint32_t end, std::vector<BoxPair>& out) {
+            for (std::uint32_t i = first; i < end; ++i) {
+                const int own = levels.level(i);
+                if (own < 0) continue;
+                auto pairWith = [&](int level) {
+                    return [&, level](std::uint64_t key, std::uint32_t j) {
+                        // Two suspects of one level find each other: reported by the first.
+                        if (j == i || (suspect[i] && level == own && j < i)) return;
+                        if (boxes[i].overlaps(boxes[j]) &&
+                            levels.reports(key, level, boxes[i], boxes[j])) {
+                            out.emplace_back(std::min(i, j), std::max(i, j));
+                        }
+                    };
+                };
+                for (int level = own; level < kLevels; ++level) {
+                    if (suspects.has(level)) {
+                        forEntriesMet(boxes[i], level, levels, suspects, pairWith(level));
+                    }
+                    if (suspect[i] && level > own && above.has(level)) {
+                        forEntriesMet(boxes[i], level, levels, above, pairWith(level));
+                    }
+                }
+            }
+        });
+}
+
+}  // namespace
+
+std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
+                                      const std::vector<char>& suspect) {
+    const BoxHierarchy levels(boxes);
+    if (!levels.valid()) return {};
+    return suspect.empty() ? allOverlapping(boxes, levels)
+                           : overlappingSuspects(boxes, suspect, levels);
 }
 
 }  // namespace ramus::detail
