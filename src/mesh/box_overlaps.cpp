@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "fixed_hash.hpp"
 #include "on_cores.hpp"
 
 namespace ramus::detail {
@@ -25,12 +26,6 @@ constexpr std::size_t kBoxesPerTask = 1024;
 
 using Cell = std::array<std::int64_t, 3>;
 using Entry = std::pair<std::uint64_t, std::uint32_t>;  // (cell key, box)
-
-std::uint64_t mixed(std::uint64_t x) {
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-}
 
 // Grids over the boxes, one per level. Level 0's cells are twice as wide as the median box's
 // largest side and it takes the boxes up to kLevelSpan cells wide (nearly all of a mesh's
@@ -169,7 +164,7 @@ public:
     }
 
 private:
-    std::size_t bucketOf(std::uint64_t key) const { return mixed(key) & (buckets_ - 1); }
+    std::size_t bucketOf(std::uint64_t key) const { return splitMixFinal(key) & (buckets_ - 1); }
 
     std::size_t buckets_ = 1;
     std::array<bool, kLevels> used_{};

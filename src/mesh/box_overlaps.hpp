@@ -41,14 +41,16 @@ using BoxPair = std::pair<std::uint32_t, std::uint32_t>;
 ///
 /// A few levels of uniform grids: level 0's cells twice as wide as the median box's largest
 /// side, holding the boxes up to two of its cells wide; the next level the same over the boxes
-/// left, and so on. A box is entered in the cells of its level that it meets, is paired with
-/// the boxes of those cells and looks up the cells it meets on the levels above (at most 8 on
-/// each); of the cells of a level that both boxes of a pair meet, the one holding the lowest
-/// corner of their intersection reports it. Linear in the
-/// boxes and the pairs, whatever the mix of sizes (a tree's trunk beside its twigs, a flat
-/// plant's leaves). Replaced CGAL's box intersection (a segment tree that sorts the boxes on
-/// every level) in session 30: the union's box searches had taken 0.5 s of tree_3d's 1.5 s (8
-/// derivations, 230 k triangles).
+/// left, and so on. Every box is entered in the cells of its level that it meets, is paired
+/// with the boxes of those cells and looks up the cells it meets on the levels above (at most 8
+/// on each); of the cells of a level that both boxes of a pair meet, the one holding the lowest
+/// corner of their intersection reports it. With suspects only the suspects are entered: every
+/// box looks them up on its level and above, and every suspect looks up the other boxes (in a
+/// table of their own) above its level. For the boxes of a mesh's triangles the work grows with
+/// the boxes and the pairs, whatever the mix of sizes (a tree's trunk beside its twigs, a flat
+/// plant's large leaves). Replaced CGAL's box intersection (a segment tree that sorts the boxes
+/// on every level) in session 30: the union's box searches had taken 0.5 s of tree_3d's 1.5 s
+/// (8 derivations, 230 k triangles).
 std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
                                       const std::vector<char>& suspect);
 

@@ -1206,7 +1206,7 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
 // closed (the result passed closedSurfaces). Triangles that are not `suspect` (input triangles
 // that crossed nothing, where they still are; after moves, those that neither moved nor crossed)
 // do not cross each other, so only pairs with a suspect are tested: the boxes of the suspects
-// against all boxes (CGAL's box intersection), then the exact triangle test, on two cores. An
+// against all boxes (detail::overlappingBoxes), then the exact triangle test, on two cores. An
 // empty `suspect` tests the whole mesh. Until session 29 the triangles near the suspects went
 // through CGAL's self-intersection test on a surface mesh of them (the same pairs on tree_3d,
 // ABOP 1.24a and 2.8c), which builds that mesh and tests every pair of boxes, most of them
