@@ -42,7 +42,7 @@ public:
         top.fill(-std::numeric_limits<double>::infinity());
         std::vector<std::uint32_t> left;  // boxes without a level yet
         for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-            if (boxes[i].empty()) continue;
+            if (boxes[i].empty() || !finite(boxes[i])) continue;
             for (int d = 0; d < 3; ++d) {
                 origin_[d] = std::min(origin_[d], boxes[i].lo[d]);
                 top[d] = std::max(top[d], boxes[i].hi[d]);
@@ -70,7 +70,7 @@ public:
     }
 
     bool valid() const { return width_[0] > 0.0; }
-    // The level of box i; -1 where it is empty.
+    // The level of box i; -1 where it is empty or not finite.
     int level(std::size_t i) const { return level_[i]; }
 
     Cell cellOf(const std::array<double, 3>& p, int level) const {
@@ -106,6 +106,12 @@ public:
     }
 
 private:
+    static bool finite(const Box3& b) {
+        for (int d = 0; d < 3; ++d) {
+            if (!std::isfinite(b.lo[d]) || !std::isfinite(b.hi[d])) return false;
+        }
+        return true;
+    }
     static double largestSide(const Box3& b) {
         return std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
     }

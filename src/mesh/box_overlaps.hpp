@@ -37,7 +37,8 @@ using BoxPair = std::pair<std::uint32_t, std::uint32_t>;
 
 /// Every pair (i, j), i < j, of `boxes` that overlap (touching counts), where boxes[i] or
 /// boxes[j] is `suspect` (every pair where `suspect` is empty), once each, in an order that
-/// depends on the boxes alone (not sorted).
+/// depends on the boxes alone (not sorted). A box with a coordinate that is not finite is left
+/// out.
 ///
 /// A few levels of uniform grids: level 0's cells twice as wide as the median box's largest
 /// side, holding the boxes up to two of its cells wide; the next level the same over the boxes

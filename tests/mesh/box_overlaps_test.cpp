@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "ramus/rng.hpp"
@@ -104,6 +105,14 @@ TEST(BoxOverlaps, DegenerateInputs) {
     // Points all at one place: every pair.
     const std::vector<Box3> points(5, box(1.0, 2.0, 3.0, 1.0, 2.0, 3.0));
     EXPECT_EQ(detail::overlappingBoxes(points, {}).size(), 10u);
+    // Coordinates that are not numbers or infinite leave their box out, not the others.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<Box3> odd(4, box(0, 0, 0, 1, 1, 1));
+    odd[1].lo[0] = nan;
+    odd[2].hi[1] = inf;
+    odd[3] = box(0.5, 0.5, 0.5, 2, 2, 2);
+    EXPECT_EQ(detail::overlappingBoxes(odd, {}), (std::vector<BoxPair>{{0, 3}}));
 }
 
 TEST(BoxOverlaps, TheSameBoxesGiveTheSamePairsInTheSameOrder) {
