@@ -32,7 +32,7 @@ using Entry = std::pair<std::uint64_t, std::uint32_t>;  // (cell key, box)
 // triangles, each meeting a few cells); the next level does the same with the boxes left, and
 // so on: a level's median box is wider than kLevelSpan cells of every level below, so its cells
 // are wider than twice any box of those, which meets at most 8 of them. Each level takes at
-// least half of the boxes left, so there are few (tree_3d 2, a flat plant's leaves 4–5).
+// least half of the boxes left, so there are few (tree_3d, ABOP 1.24a 2; ABOP 2.8c 5).
 class BoxHierarchy {
 public:
     // Over the non-empty `boxes`; none: not valid.
