@@ -178,13 +178,21 @@ private:
     std::vector<Entry> entries_;
 };
 
-// Calls visit(key, e) for every entry e of `table` in the cells of `level` that box b meets.
-template <class Visit>
-void forEntriesMet(const Box3& b, int level, const BoxHierarchy& levels, const CellTable& table,
-                   Visit visit) {
-    levels.forCells(b, level, [&](std::uint64_t key) {
+// Appends to `out` the pair of box i with every box j of `table` in the cells of `level` that i
+// meets, where wanted(j), the two overlap and the cell reports them.
+template <class Wanted>
+void addPairsMet(std::uint32_t i, int level, const std::vector<Box3>& boxes,
+                 const BoxHierarchy& levels, const CellTable& table, Wanted wanted,
+                 std::vector<BoxPair>& out) {
+    levels.forCells(boxes[i], level, [&](std::uint64_t key) {
         const auto [from, to] = table.cell(key);
-        for (const Entry* e = from; e != to; ++e) visit(key, e->second);
+        for (const Entry* e = from; e != to; ++e) {
+            const std::uint32_t j = e->second;
+            if (wanted(j) && boxes[i].overlaps(boxes[j]) &&
+                levels.reports(key, level, boxes[i], boxes[j])) {
+                out.emplace_back(std::min(i, j), std::max(i, j));
+            }
+        }
     });
 }
 
@@ -244,13 +252,8 @@ std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHie
                 for (int level = levels.level(i) + 1; levels.level(i) >= 0 && level < kLevels;
                      ++level) {
                     if (!table.has(level)) continue;
-                    forEntriesMet(boxes[i], level, levels, table,
-                                  [&](std::uint64_t key, std::uint32_t j) {
-                                      if (boxes[i].overlaps(boxes[j]) &&
-                                          levels.reports(key, level, boxes[i], boxes[j])) {
-                                          out.emplace_back(std::min(i, j), std::max(i, j));
-                                      }
-                                  });
+                    addPairsMet(
+                        i, level, boxes, levels, table, [](std::uint32_t) { return true; }, out);
                 }
             }
         },
@@ -277,22 +280,16 @@ std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
             for (std::uint32_t i = first; i < end; ++i) {
                 const int own = levels.level(i);
                 if (own < 0) continue;
-                auto pairWith = [&](int level) {
-                    return [&, level](std::uint64_t key, std::uint32_t j) {
-                        // Two suspects of one level find each other: reported by the first.
-                        if (j == i || (suspect[i] && level == own && j < i)) return;
-                        if (boxes[i].overlaps(boxes[j]) &&
-                            levels.reports(key, level, boxes[i], boxes[j])) {
-                            out.emplace_back(std::min(i, j), std::max(i, j));
-                        }
-                    };
+                // Two suspects of one level find each other: reported by the first.
+                auto wanted = [&](std::uint32_t j) {
+                    return j != i && !(suspect[i] && levels.level(j) == own && j < i);
                 };
                 for (int level = own; level < kLevels; ++level) {
                     if (suspects.has(level)) {
-                        forEntriesMet(boxes[i], level, levels, suspects, pairWith(level));
+                        addPairsMet(i, level, boxes, levels, suspects, wanted, out);
                     }
                     if (suspect[i] && level > own && above.has(level)) {
-                        forEntriesMet(boxes[i], level, levels, above, pairWith(level));
+                        addPairsMet(i, level, boxes, levels, above, wanted, out);
                     }
                 }
             }
