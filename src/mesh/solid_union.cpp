@@ -2,8 +2,9 @@
 //
 // Based on: Zhou, Grinspun, Zorin, Jacobson 2016, "Mesh arrangements for solid geometry"
 // (resolve all intersections, then keep the patches whose winding number is 0 on one side and
-// positive on the other); the resolution is CGAL's autorefinement (Polygon Mesh Processing,
-// corefinement.h: exact predicates, intersection curves inserted as constrained edges).
+// positive on the other); the resolution is our own refinement (triangle_refinement.hpp: exact
+// predicates, intersection curves inserted as constrained edges), which replaced CGAL's
+// autorefinement in session 31.
 //
 // Steps:
 // 1. Weld the input by position (edges shared by several surfaces paired per surface) and move
@@ -12,10 +13,10 @@
 //    through one intersection edge — are cases the refinement rejects ("triple
 //    intersection"); after the move they are in general position, and the moved positions are
 //    floats, so untouched triangles keep exactly representable corners.
-// 2. Autorefine the triangles that intersect others (the exact test of CGAL's self-intersection
-//    test on the pairs of overlapping boxes, box_overlaps.hpp, finds them; on a tree a few
-//    percent of the mesh), the rest staying as they are. A visitor
-//    carries each input triangle's index to the pieces it is cut into.
+// 2. Cut the triangles that intersect others along the intersections (the exact test of CGAL's
+//    self-intersection test on the pairs of overlapping boxes, box_overlaps.hpp, finds the
+//    pairs; on a tree a few percent of the mesh), the rest staying as they are; each piece
+//    keeps the index of the input triangle it came from (triangle_refinement.hpp).
 // 3. Patches: connected regions between intersection edges. The winding number of the whole
 //    input is constant on each side of a patch; one ray from the centre of the patch's largest
 //    triangle, roughly along its normal, counts signed crossings (+1 leaving a surface): the
@@ -52,7 +53,6 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -75,6 +75,7 @@
 #include "crossing_repair.hpp"
 #include "fixed_hash.hpp"
 #include "on_cores.hpp"
+#include "triangle_refinement.hpp"
 
 namespace ramus {
 namespace {
@@ -380,28 +381,34 @@ bool trianglesIntersect(const std::vector<Point>& points, const std::uint32_t* a
     return CGAL::do_intersect(ta, tb);
 }
 
-// Per triangle of closed surfaces (corners: the surface vertices `fan`, at `points`): whether
-// the refinement has to cut it, being degenerate (corners on a line) or intersecting another
-// triangle other than in the corners or edge they share (trianglesIntersect): what CGAL's
-// self-intersection test finds, on two cores (on one it was a quarter of tree_3d's union,
-// 0.36 s of 1.4 s, session 30).
-std::vector<char> intersectingTriangles(const std::vector<Point>& points,
-                                        const std::vector<std::uint32_t>& fan) {
+// The triangles of closed surfaces (corners: the surface vertices `fan`, at `points`) that the
+// refinement has to cut: per triangle whether it is degenerate (corners on a line) or
+// intersects another triangle other than in the corners or edge they share
+// (trianglesIntersect), and the intersecting pairs. What CGAL's self-intersection test finds,
+// on two cores (on one it was a quarter of tree_3d's union, 0.36 s of 1.4 s, session 30).
+struct Intersections {
+    std::vector<char> cut;
+    std::vector<detail::TrianglePair> pairs;
+};
+
+Intersections intersectingTriangles(const std::vector<Point>& points,
+                                    const std::vector<std::uint32_t>& fan) {
     const std::size_t triangles = fan.size() / 3;
     auto point = [&](std::uint32_t t, std::size_t k) -> const Point& {
         return points[fan[3 * std::size_t{t} + k]];
     };
-    std::vector<char> intersecting(triangles, 0);
+    Intersections found;
+    found.cut.resize(triangles);
     for (std::uint32_t t = 0; t < triangles; ++t) {
-        intersecting[t] = CGAL::collinear(point(t, 0), point(t, 1), point(t, 2));
+        found.cut[t] = CGAL::collinear(point(t, 0), point(t, 1), point(t, 2));
     }
-    const auto pairs = overlappingPairsWhere(
-        triangleBoxes(triangles, point, [&](std::uint32_t t) { return !intersecting[t]; }), {},
+    found.pairs = overlappingPairsWhere(
+        triangleBoxes(triangles, point, [&](std::uint32_t t) { return !found.cut[t]; }), {},
         [&](std::uint32_t s, std::uint32_t t) {
             return trianglesIntersect(points, &fan[3 * std::size_t{s}], &fan[3 * std::size_t{t}]);
         });
-    for (const auto& [s, t] : pairs) intersecting[s] = intersecting[t] = 1;
-    return intersecting;
+    for (const auto& [s, t] : found.pairs) found.cut[s] = found.cut[t] = 1;
+    return found;
 }
 
 // A separate closed piece of the result with less than this fraction of the largest piece's
@@ -487,14 +494,6 @@ std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_
     return keep;
 }
 
-// Carries the input triangle's index to the pieces the refinement cuts it into.
-struct OriginVisitor : PMP::Corefinement::Default_visitor<SurfaceMesh> {
-    SurfaceMesh::Property_map<FaceIndex, std::uint32_t> origin;
-    std::uint32_t current = kUnknown;
-    void before_subface_creations(FaceIndex split, SurfaceMesh&) { current = origin[split]; }
-    void after_subface_created(FaceIndex piece, SurfaceMesh&) { origin[piece] = current; }
-};
-
 Vector faceNormal(const SurfaceMesh& m, FaceIndex f) {
     const auto h = m.halfedge(f);
     const Point& a = m.point(m.source(h));
@@ -517,11 +516,12 @@ struct RefinedSoup {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;
 };
 
-// The refined mesh renumbered in an order of its own. Autorefinement finds the intersections
-// in an order that depends on where the heap put its arrays of face and edge boxes (CGAL breaks
-// ties between boxes by their addresses), so the refined vertices and faces came out numbered
-// differently from one call to the next within a process, and so did the union (tree_3d_tropism
-// at 4 derivations: 3 of 20 rounds of SolidUnion.TheSameInputGivesTheSameSurface…). Vertices are
+// The refined mesh renumbered in an order of its own. CGAL's autorefinement (until session 31)
+// found the intersections in an order that depended on where the heap put its arrays of face and
+// edge boxes (CGAL breaks ties between boxes by their addresses), so the refined vertices and
+// faces came out numbered differently from one call to the next within a process, and so did the
+// union (tree_3d_tropism at 4 derivations: 3 of 20 rounds of
+// SolidUnion.TheSameInputGivesTheSameSurface…); our refinement numbers them alike. Vertices are
 // ordered by position (ties: their refined index, which for the input's vertices is their input
 // index), faces by their input triangle and then their corners, each face starting at its lowest
 // corner; the origin and the cut edges come along. Everything after this is deterministic.
@@ -574,83 +574,33 @@ std::vector<char> intersectingFaces(const SurfaceMesh& m) {
 }
 #endif
 
-// Cuts the faces of `m` that intersect others (`intersecting`) along the intersections, the
-// other faces staying as they are: only the intersecting faces go to the autorefinement, whose
-// cost grows with the faces it is given (tree_3d at 8 derivations: 9 k of its 201 k faces
-// intersect, refined in 0.27 s instead of 1.8 s for all of them, Release; the same union to the
-// bit on the 13 examples compared, docs/welded.md). A face that touches a cut edge intersects the
-// face that cuts it, so the refinement never splits an edge shared with a face left out. Returns
-// why the refinement failed, or nullptr.
-const char* refineIntersections(const SurfaceMesh& m,
-                                const SurfaceMesh::Property_map<FaceIndex, std::uint32_t>& origin,
-                                const std::vector<char>& intersecting, RefinedSoup& soup) {
-    SurfaceMesh part;
-    std::vector<std::uint32_t> inPart(m.number_of_vertices(), kUnknown);
-    std::vector<std::uint32_t> fromPart;  // part vertex → vertex of m
-    auto partOrigin = part.add_property_map<FaceIndex, std::uint32_t>("f:origin", kUnknown).first;
-    for (FaceIndex f : m.faces()) {
-        if (!intersecting[f.idx()]) continue;
-        std::array<VertexIndex, 3> corners;
-        int k = 0;
-        for (VertexIndex v : CGAL::vertices_around_face(m.halfedge(f), m)) {
-            if (inPart[v.idx()] == kUnknown) {
-                inPart[v.idx()] = static_cast<std::uint32_t>(fromPart.size());
-                fromPart.push_back(static_cast<std::uint32_t>(v.idx()));
-                part.add_vertex(m.point(v));
-            }
-            corners[static_cast<std::size_t>(k++)] = VertexIndex(inPart[v.idx()]);
-        }
-        const FaceIndex g = part.add_face(corners[0], corners[1], corners[2]);
-        if (g == SurfaceMesh::null_face()) {
-            // The intersecting faces pinch at a vertex where the whole surface does not, which
-            // a surface mesh does not take: then all faces go to the refinement.
-            return refineIntersections(m, origin, std::vector<char>(m.number_of_faces(), 1), soup);
-        }
-        partOrigin[g] = origin[f];
-    }
-    auto cut = part.add_property_map<SurfaceMesh::Edge_index, bool>("e:cut", false).first;
-    OriginVisitor visitor;
-    visitor.origin = partOrigin;
-    try {
-        PMP::experimental::autorefine(
-            part, CGAL::parameters::edge_is_constrained_map(cut).visitor(visitor));
-    } catch (const std::exception&) {
-        return "the refinement met a degenerate intersection it does not handle";
+// The input triangles with the ones that intersect others cut along the intersections
+// (detail::refineTriangles), the others staying as they are. Returns why the refinement
+// failed, or nullptr.
+const char* refineIntersections(const std::vector<Point>& points,
+                                const std::vector<std::uint32_t>& fan,
+                                const Intersections& intersections, RefinedSoup& soup) {
+    std::vector<char> inPair(intersections.cut.size(), 0);
+    for (const auto& [s, t] : intersections.pairs) inPair[s] = inPair[t] = 1;
+    if (inPair != intersections.cut) return "a degenerate triangle (corners on a line)";
+    detail::RefinedTriangles refined;
+    if (const char* failure = detail::refineTriangles(points, fan, intersections.pairs, refined)) {
+        return failure;
     }
     soup = RefinedSoup{};
-    soup.points.reserve(m.number_of_vertices() + part.number_of_vertices() - fromPart.size());
-    for (VertexIndex v : m.vertices()) soup.points.push_back(m.point(v));
-    auto soupVertex = [&](VertexIndex v) {
-        return v.idx() < fromPart.size()
-                   ? fromPart[v.idx()]
-                   : static_cast<std::uint32_t>(m.number_of_vertices() + v.idx() - fromPart.size());
-    };
-    for (VertexIndex v : part.vertices()) {
-        if (v.idx() >= fromPart.size()) soup.points.push_back(part.point(v));
+    soup.points.reserve(points.size() + refined.newPoints.size());
+    soup.points.insert(soup.points.end(), points.begin(), points.end());
+    soup.points.insert(soup.points.end(), refined.newPoints.begin(), refined.newPoints.end());
+    soup.faces.reserve(intersections.cut.size() + refined.pieces.size());
+    for (std::uint32_t t = 0; t < intersections.cut.size(); ++t) {
+        if (intersections.cut[t]) continue;
+        const std::uint32_t* c = &fan[3 * std::size_t{t}];
+        soup.faces.push_back(RefinedSoup::Face{t, {c[0], c[1], c[2]}});
     }
-    soup.faces.reserve(m.number_of_faces() + part.number_of_faces());
-    auto addFace = [&](const SurfaceMesh& mesh, FaceIndex f, std::uint32_t from, auto vertexOf) {
-        RefinedSoup::Face face{from, {}};
-        int k = 0;
-        for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-            face.corners[static_cast<std::size_t>(k++)] = vertexOf(v);
-        }
-        soup.faces.push_back(face);
-    };
-    for (FaceIndex f : m.faces()) {
-        if (!intersecting[f.idx()]) {
-            addFace(m, f, origin[f], [](VertexIndex v) { return std::uint32_t{v.idx()}; });
-        }
+    for (const detail::RefinedTriangles::Piece& piece : refined.pieces) {
+        soup.faces.push_back(RefinedSoup::Face{piece.origin, piece.corners});
     }
-    for (FaceIndex f : part.faces()) {
-        if (partOrigin[f] == kUnknown) return "a refined triangle lost its origin";
-        addFace(part, f, partOrigin[f], soupVertex);
-    }
-    for (SurfaceMesh::Edge_index e : part.edges()) {
-        if (!cut[e]) continue;
-        const auto h = part.halfedge(e);
-        soup.cuts.emplace_back(soupVertex(part.source(h)), soupVertex(part.target(h)));
-    }
+    soup.cuts = std::move(refined.cuts);
     return nullptr;
 }
 
@@ -1080,7 +1030,8 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     std::vector<Point> points;
     points.reserve(vertices);
     for (const Vec3& p : movedVertex) points.emplace_back(p.x(), p.y(), p.z());
-    const std::vector<char> intersecting = intersectingTriangles(points, fan);
+    const Intersections intersections = intersectingTriangles(points, fan);
+    const std::vector<char>& intersecting = intersections.cut;
     RAMUS_ASSERT(intersecting == intersectingFaces(m));
     cut = static_cast<std::size_t>(std::count(intersecting.begin(), intersecting.end(), 1));
     if (cut > cutLimit) return Outcome::postponed;
@@ -1090,7 +1041,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
         return Outcome::done;
     }
     RefinedSoup soup;
-    if (const char* failure = refineIntersections(m, origin, intersecting, soup)) {
+    if (const char* failure = refineIntersections(points, fan, intersections, soup)) {
         return failWith(report, failure, Outcome::retry);
     }
     if (soup.faces.size() == faces && soup.points.size() == vertices) {
