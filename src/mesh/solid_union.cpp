@@ -68,6 +68,7 @@
 #include <numeric>
 #include <optional>
 #include <span>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -494,14 +495,6 @@ std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_
     return keep;
 }
 
-Vector faceNormal(const SurfaceMesh& m, FaceIndex f) {
-    const auto h = m.halfedge(f);
-    const Point& a = m.point(m.source(h));
-    const Point& b = m.point(m.target(h));
-    const Point& c = m.point(m.target(m.next(h)));
-    return CGAL::cross_product(b - a, c - a);
-}
-
 // The input triangles after the refinement: the refined vertices (the input's surface vertices
 // first, by index, then the ones the cuts made), the faces with the input triangle each is a
 // piece of, and the cut edges (pairs of vertices).
@@ -509,23 +502,23 @@ struct RefinedSoup {
     struct Face {
         std::uint32_t origin;
         std::array<std::uint32_t, 3> corners;
-        auto operator<=>(const Face&) const = default;
     };
     std::vector<Point> points;
     std::vector<Face> faces;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;
 };
 
-// The refined mesh renumbered in an order of its own. CGAL's autorefinement (until session 31)
-// found the intersections in an order that depended on where the heap put its arrays of face and
-// edge boxes (CGAL breaks ties between boxes by their addresses), so the refined vertices and
-// faces came out numbered differently from one call to the next within a process, and so did the
-// union (tree_3d_tropism at 4 derivations: 3 of 20 rounds of
-// SolidUnion.TheSameInputGivesTheSameSurface…); our refinement numbers them alike. Vertices are
-// ordered by position (ties: their refined index, which for the input's vertices is their input
-// index), faces by their input triangle and then their corners, each face starting at its lowest
-// corner; the origin and the cut edges come along. Everything after this is deterministic.
-SurfaceMesh canonicalMesh(RefinedSoup soup) {
+// The refined soup renumbered in an order of its own: vertices by position (ties: their refined
+// index, which for the input's vertices is their input index), faces by their input triangle and
+// then their corners, each face starting at its lowest corner; the cut edges come along. Until
+// session 31 CGAL's autorefinement numbered the refined mesh by where the heap put its arrays
+// (it broke ties between boxes by their addresses), and this order made the union deterministic
+// (tree_3d_tropism at 4 derivations: 3 of 20 rounds of SolidUnion.TheSameInputGivesTheSame…
+// had differed). Our refinement numbers alike every time, but the order of the faces is the
+// order in which the crossing repair (step 6) tries its moves, which are greedy: in the
+// refinement's own order (pieces after the uncut triangles) ABOP 2.8c kept a defect after its
+// first attempt and needed two (1 postponed move) instead of one.
+void canonicalOrder(RefinedSoup& soup) {
     std::vector<std::uint32_t> byPosition(soup.points.size());
     std::iota(byPosition.begin(), byPosition.end(), 0u);
     std::sort(byPosition.begin(), byPosition.end(), [&](std::uint32_t a, std::uint32_t b) {
@@ -541,24 +534,72 @@ SurfaceMesh canonicalMesh(RefinedSoup soup) {
         std::rotate(face.corners.begin(),
                     std::min_element(face.corners.begin(), face.corners.end()), face.corners.end());
     }
-    std::sort(soup.faces.begin(), soup.faces.end());
-    SurfaceMesh out;
-    out.reserve(static_cast<SurfaceMesh::size_type>(soup.points.size()),
-                static_cast<SurfaceMesh::size_type>(3 * soup.faces.size() / 2),
-                static_cast<SurfaceMesh::size_type>(soup.faces.size()));
-    for (std::uint32_t v : byPosition) out.add_vertex(soup.points[v]);
-    auto outOrigin = out.add_property_map<FaceIndex, std::uint32_t>("f:origin", kUnknown).first;
-    for (const RefinedSoup::Face& face : soup.faces) {
-        const FaceIndex f = out.add_face(VertexIndex(face.corners[0]), VertexIndex(face.corners[1]),
-                                         VertexIndex(face.corners[2]));
-        outOrigin[f] = face.origin;
+    std::sort(soup.faces.begin(), soup.faces.end(),
+              [](const RefinedSoup::Face& f, const RefinedSoup::Face& g) {
+                  return std::tie(f.origin, f.corners) < std::tie(g.origin, g.corners);
+              });
+    for (auto& [a, b] : soup.cuts) {
+        a = rank[a];
+        b = rank[b];
     }
-    auto outCut = out.add_property_map<SurfaceMesh::Edge_index, bool>("e:cut", false).first;
+    std::vector<Point> points(soup.points.size());
+    for (std::uint32_t v = 0; v < points.size(); ++v) points[rank[v]] = soup.points[v];
+    soup.points = std::move(points);
+}
+
+// Per face of the refined soup: its patch, a connected region of faces joined across edges
+// that are not cut, numbered in the order of their first faces; `count` receives how many. Each
+// surface of the soup is a closed 2-manifold over its own vertices (the refinement gives every
+// sheet its vertices), so an edge joins the two faces that use it in opposite directions.
+std::vector<std::uint32_t> patchesOf(const RefinedSoup& soup, std::size_t& count) {
+    const std::size_t faces = soup.faces.size();
+    // The faces around each vertex (counting sort).
+    std::vector<std::uint32_t> first(soup.points.size() + 1, 0);
+    for (const RefinedSoup::Face& f : soup.faces) {
+        for (const std::uint32_t v : f.corners) ++first[v + 1];
+    }
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    std::vector<std::uint32_t> around(3 * faces);
+    {
+        std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+        for (std::uint32_t f = 0; f < faces; ++f) {
+            for (const std::uint32_t v : soup.faces[f].corners) around[next[v]++] = f;
+        }
+    }
+    std::vector<std::uint64_t> cuts;
+    cuts.reserve(soup.cuts.size());
     for (const auto& [a, b] : soup.cuts) {
-        const auto g = out.halfedge(VertexIndex(rank[a]), VertexIndex(rank[b]));
-        if (g != SurfaceMesh::null_halfedge()) outCut[out.edge(g)] = true;
+        cuts.push_back(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b));
     }
-    return out;
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<std::uint32_t> parent(faces);
+    std::iota(parent.begin(), parent.end(), 0u);
+    for (std::uint32_t f = 0; f < faces; ++f) {
+        const auto& c = soup.faces[f].corners;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = c[static_cast<std::size_t>(k)];
+            const std::uint32_t b = c[static_cast<std::size_t>((k + 1) % 3)];
+            if (std::binary_search(cuts.begin(), cuts.end(),
+                                   std::uint64_t{std::min(a, b)} << 32 | std::max(a, b))) {
+                continue;
+            }
+            for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {  // the face using b → a
+                const std::uint32_t g = around[i];
+                const auto& d = soup.faces[g].corners;
+                const bool twin = (d[0] == b && d[1] == a) || (d[1] == b && d[2] == a) ||
+                                  (d[2] == b && d[0] == a);
+                if (g > f && twin) parent[findRoot(parent, g)] = findRoot(parent, f);
+            }
+        }
+    }
+    std::vector<std::uint32_t> patch(faces, kUnknown);
+    count = 0;
+    for (std::uint32_t f = 0; f < faces; ++f) {
+        const std::uint32_t root = findRoot(parent, f);
+        if (patch[root] == kUnknown) patch[root] = static_cast<std::uint32_t>(count++);
+        patch[f] = patch[root];
+    }
+    return patch;
 }
 
 #if defined(RAMUS_ENABLE_ASSERTS)
@@ -605,22 +646,22 @@ const char* refineIntersections(const std::vector<Point>& points,
 }
 
 // Per patch: whether it bounds the union (winding 0 just outside it: byRays).
-std::vector<char> classifyPatches(const SurfaceMesh& m,
-                                  const SurfaceMesh::Property_map<FaceIndex, std::size_t>& patch,
+std::vector<char> classifyPatches(const RefinedSoup& soup, const std::vector<std::uint32_t>& patch,
                                   std::size_t patches) {
     std::vector<std::size_t> largest(patches);  // triangle index
     std::vector<double> area(patches, -1.0);
-    std::vector<Triangle> triangles;  // per face, from its halfedge (as faceNormal)
-    triangles.reserve(m.number_of_faces());
-    for (FaceIndex f : m.faces()) {
-        const auto h = m.halfedge(f);
-        triangles.emplace_back(m.point(m.source(h)), m.point(m.target(h)),
-                               m.point(m.target(m.next(h))));
-        const double a = faceNormal(m, f).squared_length();
+    std::vector<Triangle> triangles;
+    triangles.reserve(soup.faces.size());
+    for (std::size_t f = 0; f < soup.faces.size(); ++f) {
+        const auto& c = soup.faces[f].corners;
+        const Triangle& t =
+            triangles.emplace_back(soup.points[c[0]], soup.points[c[1]], soup.points[c[2]]);
+        const double a = CGAL::cross_product(t.vertex(1) - t.vertex(0), t.vertex(2) - t.vertex(0))
+                             .squared_length();
         const std::size_t p = patch[f];
         if (a > area[p]) {
             area[p] = a;
-            largest[p] = triangles.size() - 1;
+            largest[p] = f;
         }
     }
     std::vector<Point> centres(patches);
@@ -1016,14 +1057,12 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     const auto faces = static_cast<SurfaceMesh::size_type>(mesh.triangleCount());
     m.reserve(vertices, 3 * faces / 2, faces);
     for (const Vec3& p : movedVertex) m.add_vertex(Point(p.x(), p.y(), p.z()));
-    auto origin = m.add_property_map<FaceIndex, std::uint32_t>("f:origin", kUnknown).first;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const FaceIndex f = m.add_face(VertexIndex(fan[3 * t]), VertexIndex(fan[3 * t + 1]),
                                        VertexIndex(fan[3 * t + 2]));
         if (f == SurfaceMesh::null_face()) {
             return failWith(report, "the input is not 2-manifold", Outcome::badInput);
         }
-        origin[f] = static_cast<std::uint32_t>(t);
     }
 
     // 2. Cut the triangles along their intersections.
@@ -1055,15 +1094,11 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
         uncrossed.add(TriangleSet::keyOf(movedFloat[v[0]], movedFloat[v[1]], movedFloat[v[2]]));
     }
     uncrossed.seal();
-    m = canonicalMesh(std::move(soup));
-    origin = m.property_map<FaceIndex, std::uint32_t>("f:origin").first;
-    auto constrained = m.property_map<SurfaceMesh::Edge_index, bool>("e:cut").first;
+    canonicalOrder(soup);
 
     // 3. Patches on the union's boundary.
-    auto patch = m.add_property_map<FaceIndex, std::size_t>("f:patch").first;
-    report.patches =
-        PMP::connected_components(m, patch, CGAL::parameters::edge_is_constrained_map(constrained));
-    const std::vector<char> keep = classifyPatches(m, patch, report.patches);
+    const std::vector<std::uint32_t> patch = patchesOf(soup, report.patches);
+    const std::vector<char> keep = classifyPatches(soup, patch, report.patches);
     report.keptPatches = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1));
 
     // 4. The kept pieces, by primitive.
@@ -1081,12 +1116,12 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     CornerWriter writer(mesh, moved, out);
     const std::size_t primitiveCount = std::max<std::size_t>(mesh.primitives.size(), 1);
     std::vector<std::vector<std::uint32_t>> byPrimitive(primitiveCount);
-    for (FaceIndex f : m.faces()) {
+    for (std::size_t f = 0; f < soup.faces.size(); ++f) {
         if (!keep[patch[f]]) continue;
-        const std::uint32_t t = origin[f];
+        const std::uint32_t t = soup.faces[f].origin;
         std::vector<std::uint32_t>& indices = byPrimitive[primitiveOf[t]];
-        for (VertexIndex v : CGAL::vertices_around_face(m.halfedge(f), m)) {
-            indices.push_back(writer.corner(t, static_cast<std::uint32_t>(v.idx()), m.point(v)));
+        for (const std::uint32_t v : soup.faces[f].corners) {
+            indices.push_back(writer.corner(t, v, soup.points[v]));
         }
     }
     for (std::size_t p = 0; p < primitiveCount; ++p) {
