@@ -48,9 +48,6 @@
 
 #if RAMUS_WITH_CGAL
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -73,6 +70,7 @@
 #include <vector>
 
 #include "box_overlaps.hpp"
+#include "box_tree.hpp"
 #include "crossing_repair.hpp"
 #include "fixed_hash.hpp"
 #include "on_cores.hpp"
@@ -237,15 +235,14 @@ std::vector<char> uncollapsedTriangles(const std::vector<std::uint32_t>& weld,
 
 using Triangle = Kernel::Triangle_3;
 
-// Signed crossings of rays with a fixed set of triangles, over an AABB tree of them: the
-// winding number of the surfaces they make at a ray's start (all wound outward), with chosen
-// triangles left out. The tree is built at once, so that threads can cast rays together.
+// Signed crossings of rays with a fixed set of triangles, over a tree of their boxes
+// (detail::BoxTree; CGAL's AABB tree until session 31): the winding number of the surfaces they
+// make at a ray's start (all wound outward), with chosen triangles left out. The tree is built
+// at once, so that threads can cast rays together.
 class RayCrossings {
 public:
     explicit RayCrossings(std::vector<Triangle> triangles)
-        : triangles_(std::move(triangles)), tree_(triangles_.cbegin(), triangles_.cend()) {
-        tree_.build();
-    }
+        : triangles_(std::move(triangles)), tree_(boxesOf(triangles_)) {}
     RayCrossings(const RayCrossings&) = delete;
     RayCrossings& operator=(const RayCrossings&) = delete;
 
@@ -264,26 +261,36 @@ public:
         const Point& o = ray.source();
         const Point q = ray.second_point();
         Count result;
-        tree_.all_intersected_primitives(
-            ray, boost::make_function_output_iterator([&](Iterator hit) {
-                if (skip(static_cast<std::size_t>(hit - triangles_.cbegin()))) return;
-                const Point &a = hit->vertex(0), &b = hit->vertex(1), &c = hit->vertex(2);
-                const CGAL::Orientation side = CGAL::orientation(a, b, c, o);
-                if (side == CGAL::COPLANAR || CGAL::orientation(o, q, a, b) == CGAL::COPLANAR ||
-                    CGAL::orientation(o, q, b, c) == CGAL::COPLANAR ||
-                    CGAL::orientation(o, q, c, a) == CGAL::COPLANAR) {
-                    result.degenerate = true;
-                }
-                result.winding += side == CGAL::NEGATIVE ? 1 : -1;
-            }));
+        tree_.forEachAlongRay({o.x(), o.y(), o.z()}, {d.x(), d.y(), d.z()}, [&](std::uint32_t i) {
+            if (skip(std::size_t{i})) return;
+            const Triangle& t = triangles_[i];
+            if (!CGAL::do_intersect(ray, t)) return;
+            const Point &a = t.vertex(0), &b = t.vertex(1), &c = t.vertex(2);
+            const CGAL::Orientation side = CGAL::orientation(a, b, c, o);
+            if (side == CGAL::COPLANAR || CGAL::orientation(o, q, a, b) == CGAL::COPLANAR ||
+                CGAL::orientation(o, q, b, c) == CGAL::COPLANAR ||
+                CGAL::orientation(o, q, c, a) == CGAL::COPLANAR) {
+                result.degenerate = true;
+            }
+            result.winding += side == CGAL::NEGATIVE ? 1 : -1;
+        });
         return result;
     }
 
 private:
-    using Iterator = std::vector<Triangle>::const_iterator;
-    using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
+    static std::vector<detail::Box3> boxesOf(const std::vector<Triangle>& triangles) {
+        std::vector<detail::Box3> boxes(triangles.size());
+        for (std::size_t i = 0; i < triangles.size(); ++i) {
+            for (int k = 0; k < 3; ++k) {
+                const Point& p = triangles[i].vertex(k);
+                boxes[i].add({p.x(), p.y(), p.z()});
+            }
+        }
+        return boxes;
+    }
+
     std::vector<Triangle> triangles_;
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree_;
+    detail::BoxTree tree_;
 };
 
 using detail::forEachOnCores;

@@ -1,0 +1,88 @@
+// A bounding volume hierarchy over boxes for casting rays (box_tree.hpp).
+#include "box_tree.hpp"
+
+#include <cmath>
+
+namespace ramus::detail {
+namespace {
+
+// The bits of a 10-bit value spread to every third bit.
+std::uint32_t spreadBits(std::uint32_t x) {
+    x = (x | (x << 16)) & 0x030000FFu;
+    x = (x | (x << 8)) & 0x0300F00Fu;
+    x = (x | (x << 4)) & 0x030C30C3u;
+    x = (x | (x << 2)) & 0x09249249u;
+    return x;
+}
+
+}  // namespace
+
+BoxTree::BoxTree(const std::vector<Box3>& boxes) {
+    Box3 scene;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+        if (boxes[i].empty()) continue;
+        order_.push_back(i);
+        scene.add(boxes[i].lo);
+        scene.add(boxes[i].hi);
+    }
+    if (order_.empty()) return;
+    double magnitude = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        magnitude = std::max(
+            {magnitude, scene.hi[d] - scene.lo[d], std::abs(scene.lo[d]), std::abs(scene.hi[d])});
+    }
+    widen_ = 1e-9 * magnitude;
+    // Morton codes of the centres on a 1024³ grid over the scene.
+    std::vector<std::uint64_t> keyed(order_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+        const Box3& b = boxes[order_[k]];
+        std::uint32_t code = 0;
+        for (int d = 0; d < 3; ++d) {
+            const double size = scene.hi[d] - scene.lo[d];
+            const double centre = 0.5 * (b.lo[d] + b.hi[d]);
+            const double unit = size > 0.0 ? (centre - scene.lo[d]) / size : 0.0;
+            const auto cell = static_cast<std::uint32_t>(std::clamp(unit * 1024.0, 0.0, 1023.0));
+            code |= spreadBits(cell) << d;
+        }
+        keyed[k] = std::uint64_t{code} << 32 | order_[k];
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < keyed.size(); ++k) {
+        order_[k] = static_cast<std::uint32_t>(keyed[k] & 0xFFFFFFFFu);
+    }
+    boxes_.reserve(order_.size());
+    for (const std::uint32_t i : order_) {
+        Box3 box = boxes[i];
+        for (int d = 0; d < 3; ++d) {
+            box.lo[d] -= widen_;
+            box.hi[d] += widen_;
+        }
+        boxes_.push_back(box);
+    }
+    nodes_.reserve(2 * (order_.size() / kLeafSize + 1));
+    build(0, static_cast<std::uint32_t>(order_.size()));
+}
+
+std::uint32_t BoxTree::build(std::uint32_t first, std::uint32_t count) {
+    const auto n = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    if (count <= kLeafSize) {
+        Box3 box;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            box.add(boxes_[i].lo);
+            box.add(boxes_[i].hi);
+        }
+        nodes_[n] = Node{box, first, count};
+        return n;
+    }
+    const std::uint32_t half = count / 2;
+    build(first, half);  // the left child, at n + 1
+    const std::uint32_t right = build(first + half, count - half);
+    Box3 box = nodes_[n + 1].box;
+    box.add(nodes_[right].box.lo);
+    box.add(nodes_[right].box.hi);
+    nodes_[n] = Node{box, right, 0};
+    return n;
+}
+
+}  // namespace ramus::detail
