@@ -1,5 +1,6 @@
-// A bounding volume hierarchy over boxes for casting rays: the broad phase of the solid union's
-// winding numbers (src/mesh/solid_union.cpp). Internal to src/mesh.
+// A bounding volume hierarchy over boxes, for casting rays and finding the boxes near one: the
+// broad phase of the solid union's winding numbers (src/mesh/solid_union.cpp) and of the
+// crossing repair's searches (crossing_repair.cpp). Internal to src/mesh.
 #pragma once
 
 #include <algorithm>
@@ -13,12 +14,13 @@
 
 namespace ramus::detail {
 
-/// The boxes in a binary tree: sorted along a Morton curve of their centres, split in halves
-/// down to leaves of at most kLeafSize boxes, each node holding the box around its boxes,
-/// widened by a relative 1e-9 of the scene so that the slab test in floating point never
-/// misses a box that a ray touches. Building is a sort and a linear pass (CGAL's AABB tree,
-/// which it replaced for the union's rays in session 31, splits at the median on every level:
-/// 0.09 s for tree_3d's 257 k triangles, most of the patch classification's time).
+/// The boxes in a binary tree, built once and then only read (threads may search together): sorted
+/// along a Morton curve of their centres, split in halves down to leaves of at most kLeafSize
+/// boxes, each node holding the box around its boxes, widened by a relative 1e-9 of the scene so
+/// that the slab test in floating point never misses a box that a ray touches. Building is a sort
+/// and a linear pass (CGAL's AABB tree, which it replaced for the union's rays in session 31,
+/// splits at the median on every level: 0.09 s for tree_3d's 257 k triangles, most of the patch
+/// classification's time).
 class BoxTree {
 public:
     static constexpr std::uint32_t kLeafSize = 4;
@@ -49,6 +51,29 @@ public:
             }
             stack[top++] = node.first;  // the right child
             stack[top++] = n + 1;       // the left child, first
+        }
+    }
+
+    /// Calls visit(i) for every box i that overlaps `query` (touching counts; and any within
+    /// the widening of it), each once, in no particular order.
+    template <class Visit>
+    void forEachOverlapping(const Box3& query, Visit visit) const {
+        if (nodes_.empty() || query.empty()) return;
+        std::uint32_t stack[64];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const std::uint32_t n = stack[--top];
+            const Node& node = nodes_[n];
+            if (!node.box.overlaps(query)) continue;
+            if (node.count > 0) {
+                for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                    if (boxes_[i].overlaps(query)) visit(order_[i]);
+                }
+                continue;
+            }
+            stack[top++] = node.first;
+            stack[top++] = n + 1;
         }
     }
 

@@ -3,9 +3,6 @@
 
 #if RAMUS_WITH_CGAL
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
@@ -17,6 +14,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "box_tree.hpp"
 #include "ramus/rng.hpp"
 
 namespace ramus::detail {
@@ -25,8 +23,6 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Triangle = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 Point pointOf(const Vec3f& p) { return {p.x(), p.y(), p.z()}; }
 
@@ -59,21 +55,20 @@ private:
     Vec3 vertexNormal(std::uint32_t v);
     void addDirection(const Vec3& d);
     void addTowardsMiddle(std::uint32_t v);
+    static std::vector<Box3> boxesOf(const CrossingSurface& surface);
 
     CrossingSurface& s_;
     double maxMove_;
     std::vector<Vec3f> original_;       // per vertex: where it was (moves stay within maxMove)
     std::vector<std::uint32_t> first_;  // per vertex + 1: its triangles in around_
     std::vector<std::uint32_t> around_;
-    std::vector<Triangle> stored_;  // the triangles as they were, for the tree
-    Tree tree_;
-    std::vector<Tree::Primitive_id> hits_;
+    BoxTree tree_;  // the triangles' boxes as they were (CGAL's AABB tree until session 31)
     std::vector<Vec3> normals_;     // scratch: normals of a vertex's triangles before a move
     std::vector<Vec3> directions_;  // scratch: the directions of a vertex's moves
 };
 
 Separator::Separator(CrossingSurface& surface, double maxMove)
-    : s_(surface), maxMove_(maxMove), original_(surface.points) {
+    : s_(surface), maxMove_(maxMove), original_(surface.points), tree_(boxesOf(surface)) {
     const std::size_t vertices = s_.points.size();
     first_.assign(vertices + 1, 0);
     for (const auto& t : s_.triangles) {
@@ -85,10 +80,17 @@ Separator::Separator(CrossingSurface& surface, double maxMove)
     for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) {
         for (std::uint32_t v : s_.triangles[t]) around_[fill[v]++] = t;
     }
-    stored_.reserve(s_.triangles.size());
-    for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) stored_.push_back(triangle(t));
-    tree_.insert(stored_.cbegin(), stored_.cend());
-    tree_.build();
+}
+
+std::vector<Box3> Separator::boxesOf(const CrossingSurface& surface) {
+    std::vector<Box3> boxes(surface.triangles.size());
+    for (std::size_t t = 0; t < boxes.size(); ++t) {
+        for (const std::uint32_t v : surface.triangles[t]) {
+            const Vec3f& p = surface.points[v];
+            boxes[t].add({p.x(), p.y(), p.z()});
+        }
+    }
+    return boxes;
 }
 
 Triangle Separator::triangle(std::uint32_t t) const {
@@ -130,18 +132,16 @@ std::size_t Separator::crossingsAround(std::uint32_t v, std::vector<TrianglePair
     std::size_t count = 0;
     for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
         const std::uint32_t f = around_[i];
-        CGAL::Bbox_3 box = triangle(f).bbox();
+        const CGAL::Bbox_3 bbox = triangle(f).bbox();
         const double grow = 1.01 * maxMove_;
-        box = CGAL::Bbox_3(box.xmin() - grow, box.ymin() - grow, box.zmin() - grow,
-                           box.xmax() + grow, box.ymax() + grow, box.zmax() + grow);
-        hits_.clear();
-        tree_.all_intersected_primitives(box, std::back_inserter(hits_));
-        for (const auto& hit : hits_) {
-            const auto g = static_cast<std::uint32_t>(hit - stored_.cbegin());
-            if (g == f || !cross(f, g)) continue;
+        Box3 box;
+        box.add({bbox.xmin() - grow, bbox.ymin() - grow, bbox.zmin() - grow});
+        box.add({bbox.xmax() + grow, bbox.ymax() + grow, bbox.zmax() + grow});
+        tree_.forEachOverlapping(box, [&](std::uint32_t g) {
+            if (g == f || !cross(f, g)) return;
             ++count;
             if (pairs != nullptr) pairs->emplace_back(std::min(f, g), std::max(f, g));
-        }
+        });
     }
     return count;
 }
