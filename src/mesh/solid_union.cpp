@@ -575,8 +575,10 @@ std::vector<std::uint32_t> patchesOf(const RefinedSoup& soup, std::size_t& count
     }
     std::vector<std::uint64_t> cuts;
     cuts.reserve(soup.cuts.size());
+    std::vector<char> onCut(soup.points.size(), 0);  // most edges have a corner on no cut
     for (const auto& [a, b] : soup.cuts) {
         cuts.push_back(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b));
+        onCut[a] = onCut[b] = 1;
     }
     std::sort(cuts.begin(), cuts.end());
     std::vector<std::uint32_t> parent(faces);
@@ -586,7 +588,8 @@ std::vector<std::uint32_t> patchesOf(const RefinedSoup& soup, std::size_t& count
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t a = c[static_cast<std::size_t>(k)];
             const std::uint32_t b = c[static_cast<std::size_t>((k + 1) % 3)];
-            if (std::binary_search(cuts.begin(), cuts.end(),
+            if (onCut[a] && onCut[b] &&
+                std::binary_search(cuts.begin(), cuts.end(),
                                    std::uint64_t{std::min(a, b)} << 32 | std::max(a, b))) {
                 continue;
             }
