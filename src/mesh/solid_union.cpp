@@ -235,6 +235,21 @@ std::vector<char> uncollapsedTriangles(const std::vector<std::uint32_t>& weld,
 
 using Triangle = Kernel::Triangle_3;
 
+// The box of each triangle t < triangles, whose corners are point(t, 0..2); empty where not
+// include(t).
+template <class PointOf, class Include>
+std::vector<detail::Box3> triangleBoxes(std::size_t triangles, PointOf point, Include include) {
+    std::vector<detail::Box3> boxes(triangles);
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        if (!include(t)) continue;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Point& p = point(t, k);
+            boxes[t].add({p.x(), p.y(), p.z()});
+        }
+    }
+    return boxes;
+}
+
 // Signed crossings of rays with a fixed set of triangles, over a tree of their boxes
 // (detail::BoxTree; CGAL's AABB tree until session 31): the winding number of the surfaces they
 // make at a ray's start (all wound outward), with chosen triangles left out. The tree is built
@@ -242,7 +257,13 @@ using Triangle = Kernel::Triangle_3;
 class RayCrossings {
 public:
     explicit RayCrossings(std::vector<Triangle> triangles)
-        : triangles_(std::move(triangles)), tree_(boxesOf(triangles_)) {}
+        : triangles_(std::move(triangles)),
+          tree_(triangleBoxes(
+              triangles_.size(),
+              [&](std::size_t t, std::size_t k) -> const Point& {
+                  return triangles_[t].vertex(static_cast<int>(k));
+              },
+              [](std::size_t) { return true; })) {}
     RayCrossings(const RayCrossings&) = delete;
     RayCrossings& operator=(const RayCrossings&) = delete;
 
@@ -278,17 +299,6 @@ public:
     }
 
 private:
-    static std::vector<detail::Box3> boxesOf(const std::vector<Triangle>& triangles) {
-        std::vector<detail::Box3> boxes(triangles.size());
-        for (std::size_t i = 0; i < triangles.size(); ++i) {
-            for (int k = 0; k < 3; ++k) {
-                const Point& p = triangles[i].vertex(k);
-                boxes[i].add({p.x(), p.y(), p.z()});
-            }
-        }
-        return boxes;
-    }
-
     std::vector<Triangle> triangles_;
     detail::BoxTree tree_;
 };
@@ -310,21 +320,6 @@ bool byRays(Ray ray, Pred pred) {
         if (k < votes.size()) votes[k] = pred(count.winding);
     }
     return std::count(votes.begin(), votes.end(), true) >= 2;
-}
-
-// The box of each triangle t < triangles, whose corners are point(t, 0..2); empty where not
-// include(t).
-template <class PointOf, class Include>
-std::vector<detail::Box3> triangleBoxes(std::size_t triangles, PointOf point, Include include) {
-    std::vector<detail::Box3> boxes(triangles);
-    for (std::uint32_t t = 0; t < triangles; ++t) {
-        if (!include(t)) continue;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const Point& p = point(t, k);
-            boxes[t].add({p.x(), p.y(), p.z()});
-        }
-    }
-    return boxes;
 }
 
 // The pairs (s, t), s < t, of triangles whose `boxes` overlap (detail::overlappingBoxes), at
@@ -506,10 +501,7 @@ std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_
 // first, by index, then the ones the cuts made), the faces with the input triangle each is a
 // piece of, and the cut edges (pairs of vertices).
 struct RefinedSoup {
-    struct Face {
-        std::uint32_t origin;
-        std::array<std::uint32_t, 3> corners;
-    };
+    using Face = detail::RefinedTriangles::Piece;  // the input triangle, the corners
     std::vector<Point> points;
     std::vector<Face> faces;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;
@@ -648,9 +640,7 @@ const char* refineIntersections(const std::vector<Point>& points,
         const std::uint32_t* c = &fan[3 * std::size_t{t}];
         soup.faces.push_back(RefinedSoup::Face{t, {c[0], c[1], c[2]}});
     }
-    for (const detail::RefinedTriangles::Piece& piece : refined.pieces) {
-        soup.faces.push_back(RefinedSoup::Face{piece.origin, piece.corners});
-    }
+    soup.faces.insert(soup.faces.end(), refined.pieces.begin(), refined.pieces.end());
     soup.cuts = std::move(refined.cuts);
     return nullptr;
 }
