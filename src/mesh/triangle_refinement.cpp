@@ -24,6 +24,7 @@
 #include <cmath>
 #include <compare>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "fixed_hash.hpp"
@@ -83,6 +84,8 @@ Passage passage(const RefinementPoint& p, const RefinementPoint& q, const Refine
 }
 
 class Refiner {
+    using Interval = CGAL::Interval_nt<false>;
+
 public:
     Refiner(const std::vector<RefinementPoint>& points, const std::vector<std::uint32_t>& fan)
         : points_(points), fan_(fan) {}
@@ -159,7 +162,59 @@ public:
             CGAL::intersection(exactPlane(id.of[0]), exactPlane(id.of[1]), exactPlane(id.of[2])));
     }
 
+    // Bounds of the point's coordinates, in interval arithmetic on the input (no exact
+    // numbers are built; where a bound would not be finite, the lazy exact point's).
+    std::array<Interval, 3> bounds(const PointId& id) const {
+        CGAL::Protect_FPU_rounding<true> protect;
+        std::array<Interval, 3> out;
+        if (id.kind == PointId::corner) {
+            out = corner(id.of[0]);
+        } else if (id.kind == PointId::edgeThrough) {
+            const auto [normal, offset] = plane(id.of[2]);
+            const auto u = corner(id.of[0]), w = corner(id.of[1]);
+            const Interval at = (offset - dot(normal, u)) / dot(normal, minus(w, u));
+            for (int d = 0; d < 3; ++d) out[d] = u[d] + at * (w[d] - u[d]);
+        } else {
+            const auto [n1, d1] = plane(id.of[0]);
+            const auto [n2, d2] = plane(id.of[1]);
+            const auto [n3, d3] = plane(id.of[2]);
+            const auto c23 = cross(n2, n3), c31 = cross(n3, n1), c12 = cross(n1, n2);
+            const Interval det = dot(n1, c23);
+            for (int d = 0; d < 3; ++d) out[d] = (d1 * c23[d] + d2 * c31[d] + d3 * c12[d]) / det;
+        }
+        for (const Interval& x : out) {
+            if (!std::isfinite(x.inf()) || !std::isfinite(x.sup())) {
+                const auto& a = CGAL::approx(exactPoint(id));
+                return {a.x(), a.y(), a.z()};
+            }
+        }
+        return out;
+    }
+
 private:
+    using Triple = std::array<Interval, 3>;
+
+    Triple corner(std::uint32_t v) const {
+        const RefinementPoint& p = points_[v];
+        return {Interval(p.x()), Interval(p.y()), Interval(p.z())};
+    }
+    static Triple minus(const Triple& a, const Triple& b) {
+        return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+    static Triple cross(const Triple& a, const Triple& b) {
+        return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+    static Interval dot(const Triple& a, const Triple& b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+    // Triangle t's plane: normal · x = offset.
+    std::pair<Triple, Interval> plane(std::uint32_t t) const {
+        const std::uint32_t* c = corners(t);
+        const Triple a = corner(c[0]);
+        const Triple normal = cross(minus(corner(c[1]), a), minus(corner(c[2]), a));
+        return {normal, dot(normal, a)};
+    }
+
     const std::vector<RefinementPoint>& points_;
     const std::vector<std::uint32_t>& fan_;
 };
@@ -183,20 +238,25 @@ struct PlanePoint {
 // known to lie on (the triangle's edges, and the intersections with other triangles), so that
 // collinear points are found without exact arithmetic.
 struct PlaneTable {
-    int dropped = 2;  // the axis projected away
-    std::vector<ExactPoint> exact;
-    std::vector<std::vector<std::uint32_t>> lines;  // per point, ascending
+    const Refiner* refiner = nullptr;
+    int dropped = 2;                                       // the axis projected away
+    std::vector<PointId> ids;                              // per point
+    std::vector<std::vector<std::uint32_t>> lines;         // per point, ascending
+    mutable std::vector<std::optional<ExactPoint>> exact;  // built where first needed
 
-    PlanePoint add(const ExactPoint& p) {
-        const auto& a = CGAL::approx(p);
-        exact.push_back(p);
+    PlanePoint add(const PointId& id) {
+        const auto bounds = refiner->bounds(id);
+        ids.push_back(id);
         lines.emplace_back();
+        exact.emplace_back();
         const int u = dropped == 0 ? 1 : 0, v = dropped == 2 ? 1 : 2;
-        return PlanePoint{a[u], a[v], static_cast<std::uint32_t>(exact.size() - 1)};
+        return PlanePoint{bounds[static_cast<std::size_t>(u)], bounds[static_cast<std::size_t>(v)],
+                          static_cast<std::uint32_t>(ids.size() - 1)};
     }
     // The exact projected coordinates.
     std::array<Exact::FT::ET, 2> exact2(std::uint32_t i) const {
-        const auto& e = CGAL::exact(exact[i]);
+        if (!exact[i]) exact[i] = refiner->exactPoint(ids[i]);
+        const auto& e = CGAL::exact(*exact[i]);
         const int u = dropped == 0 ? 1 : 0, v = dropped == 2 ? 1 : 2;
         return {e[u], e[v]};
     }
@@ -316,6 +376,7 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
                  const std::vector<std::pair<Segment, std::uint32_t>>& through, TriangleCut& cut) {
     const std::uint32_t* c = refiner.corners(t);
     PlaneTable table;
+    table.refiner = &refiner;
     {
         const RefinementPoint& p0 = refiner.point(c[0]);
         const auto normal = CGAL::cross_product(refiner.point(c[1]) - p0, refiner.point(c[2]) - p0);
@@ -344,7 +405,7 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
     };
     std::vector<PlanePoint> at;
     at.reserve(ids.size());
-    for (const PointId& id : ids) at.push_back(table.add(refiner.exactPoint(id)));
+    for (const PointId& id : ids) at.push_back(table.add(id));
     for (std::uint32_t k = 0; k < 3; ++k) {
         table.lines[k] = {kEdgeLine + k, kEdgeLine + (k + 2) % 3};
     }
@@ -385,7 +446,7 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
             std::array<std::uint32_t, 3> three{t, a.other, b.other};
             std::sort(three.begin(), three.end());
             ids.push_back(PointId{PointId::threeTriangles, three});
-            at.push_back(table.add(refiner.exactPoint(ids.back())));
+            at.push_back(table.add(ids.back()));
             table.lines.back() = {a.other, b.other};
         }
     }
@@ -505,6 +566,9 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
     // Vertices: the input's corners keep their index; the others are numbered as they come.
     const auto inputPoints = static_cast<std::uint32_t>(points.size());
     std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> vertexOf;
+    std::size_t cutPoints = 0;  // with repeats: an upper bound of the vertices
+    for (const TriangleCut& cut : cuts) cutPoints += cut.points.size() - 3;
+    vertexOf.reserve(cutPoints);
     std::vector<PointId> newPointIds;
     std::vector<std::uint32_t> global;
     for (std::size_t i = 0; i < cuts.size(); ++i) {
