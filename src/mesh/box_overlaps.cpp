@@ -183,13 +183,14 @@ private:
 template <class Wanted>
 void addPairsMet(std::uint32_t i, int level, const std::vector<Box3>& boxes,
                  const BoxHierarchy& levels, const CellTable& table, Wanted wanted,
-                 std::vector<BoxPair>& out) {
+                 const PairFilter& keep, std::vector<BoxPair>& out) {
     levels.forCells(boxes[i], level, [&](std::uint64_t key) {
         const auto [from, to] = table.cell(key);
         for (const Entry* e = from; e != to; ++e) {
             const std::uint32_t j = e->second;
             if (wanted(j) && boxes[i].overlaps(boxes[j]) &&
-                levels.reports(key, level, boxes[i], boxes[j])) {
+                levels.reports(key, level, boxes[i], boxes[j]) &&
+                keep(std::min(i, j), std::max(i, j))) {
                 out.emplace_back(std::min(i, j), std::max(i, j));
             }
         }
@@ -218,7 +219,8 @@ std::vector<BoxPair> pairsByBoxes(std::size_t n, Task task,
 
 // Every pair of overlapping boxes: the pairs within each cell of each level, then each box
 // with the boxes of the levels above its own in the cells of theirs it meets.
-std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHierarchy& levels) {
+std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHierarchy& levels,
+                                    const PairFilter& keep) {
     const CellTable table(boxes, levels, [](std::uint32_t) { return true; });
     const std::size_t bucketTasks = (table.buckets() + kBucketsPerTask - 1) / kBucketsPerTask;
     std::vector<std::vector<BoxPair>> found(bucketTasks);
@@ -236,7 +238,8 @@ std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHie
                 for (std::size_t a = 0; a < local.size(); ++a) {
                     for (std::size_t c = a + 1; c < local.size(); ++c) {
                         if (local[a].overlaps(local[c]) &&
-                            levels.reports(s->first, level, local[a], local[c])) {
+                            levels.reports(s->first, level, local[a], local[c]) &&
+                            keep(s[a].second, s[c].second)) {
                             found[task].emplace_back(s[a].second, s[c].second);  // sorted
                         }
                     }
@@ -253,7 +256,8 @@ std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHie
                      ++level) {
                     if (!table.has(level)) continue;
                     addPairsMet(
-                        i, level, boxes, levels, table, [](std::uint32_t) { return true; }, out);
+                        i, level, boxes, levels, table, [](std::uint32_t) { return true; }, keep,
+                        out);
                 }
             }
         },
@@ -266,7 +270,7 @@ std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHie
 // crossing search after moving a few corners) no table of all boxes is built.
 std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
                                          const std::vector<char>& suspect,
-                                         const BoxHierarchy& levels) {
+                                         const BoxHierarchy& levels, const PairFilter& keep) {
     int lowest = kLevels;  // the lowest level of a suspect
     for (std::uint32_t i = 0; i < boxes.size(); ++i) {
         if (suspect[i] && levels.level(i) >= 0) lowest = std::min(lowest, levels.level(i));
@@ -286,10 +290,10 @@ std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
                 };
                 for (int level = own; level < kLevels; ++level) {
                     if (suspects.has(level)) {
-                        addPairsMet(i, level, boxes, levels, suspects, wanted, out);
+                        addPairsMet(i, level, boxes, levels, suspects, wanted, keep, out);
                     }
                     if (suspect[i] && level > own && above.has(level)) {
-                        addPairsMet(i, level, boxes, levels, above, wanted, out);
+                        addPairsMet(i, level, boxes, levels, above, wanted, keep, out);
                     }
                 }
             }
@@ -299,11 +303,13 @@ std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
 }  // namespace
 
 std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
-                                      const std::vector<char>& suspect) {
+                                      const std::vector<char>& suspect, const PairFilter& keep) {
     const BoxHierarchy levels(boxes);
     if (!levels.valid()) return {};
-    return suspect.empty() ? allOverlapping(boxes, levels)
-                           : overlappingSuspects(boxes, suspect, levels);
+    const PairFilter all = [](std::uint32_t, std::uint32_t) { return true; };
+    const PairFilter& filter = keep ? keep : all;
+    return suspect.empty() ? allOverlapping(boxes, levels, filter)
+                           : overlappingSuspects(boxes, suspect, levels, filter);
 }
 
 }  // namespace ramus::detail

@@ -323,20 +323,12 @@ bool byRays(Ray ray, Pred pred) {
 
 // The pairs (s, t), s < t, of triangles whose `boxes` overlap (detail::overlappingBoxes), at
 // least one of them `suspect` (every pair where that is empty), for which test(s, t) holds,
-// tested on two cores; sorted.
+// tested on the search's threads as they are found; sorted.
 template <class Test>
 std::vector<detail::TrianglePair> overlappingPairsWhere(const std::vector<detail::Box3>& boxes,
                                                         const std::vector<char>& suspect,
                                                         Test test) {
-    const std::vector<detail::BoxPair> candidates = detail::overlappingBoxes(boxes, suspect);
-    std::vector<char> passes(candidates.size(), 0);
-    forEachOnCores(candidates.size(), [&](std::size_t i) {
-        passes[i] = test(candidates[i].first, candidates[i].second);
-    });
-    std::vector<detail::TrianglePair> pairs;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-        if (passes[i]) pairs.push_back(candidates[i]);
-    }
+    std::vector<detail::TrianglePair> pairs = detail::overlappingBoxes(boxes, suspect, test);
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }

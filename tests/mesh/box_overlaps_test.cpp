@@ -83,6 +83,25 @@ TEST(BoxOverlaps, OnlyPairsWithASuspect) {
     EXPECT_EQ(sorted(detail::overlappingBoxes(boxes, suspect)), expected);
 }
 
+// A filter drops pairs as they are found, from both searches; it sees each pair once, i < j.
+TEST(BoxOverlaps, AFilterKeepsOnlyThePairsItWants) {
+    const std::vector<Box3> boxes = mixedBoxes(11);
+    std::vector<char> suspect(boxes.size(), 0);
+    for (std::size_t i = 0; i < boxes.size(); i += 7) suspect[i] = 1;
+    const detail::PairFilter odd = [](std::uint32_t i, std::uint32_t j) {
+        EXPECT_LT(i, j);
+        return (i + j) % 2 == 1;
+    };
+    for (const std::vector<char>& which : {std::vector<char>{}, suspect}) {
+        std::vector<BoxPair> expected;
+        for (const BoxPair& p : allPairsOverlapping(boxes, which)) {
+            if ((p.first + p.second) % 2 == 1) expected.push_back(p);
+        }
+        EXPECT_GT(expected.size(), 10u);
+        EXPECT_EQ(sorted(detail::overlappingBoxes(boxes, which, odd)), expected);
+    }
+}
+
 TEST(BoxOverlaps, TouchingBoxesOverlapAndCornersOnCellBordersCount) {
     // Unit cubes side by side on a lattice: each touches its 26 neighbours (faces, edges,
     // corners), all on the borders of the grid's cells.
