@@ -5,9 +5,11 @@
 //    exact orientation predicates on the input corners.
 // 2. Per cut triangle: the segments in it; where two of them cross, the point common to three
 //    triangles; then a constrained Delaunay triangulation of the triangle's corners and all
-//    these points (exact coordinates, lazily evaluated: CGAL's Epeck), projected on the axis
-//    plane where the triangle is largest, with every segment as a constraint. Points on the
-//    triangle's edges are exactly on them, so the triangulation covers the triangle exactly.
+//    these points, projected on the axis plane where the triangle is largest, with every
+//    segment as a constraint. Its predicates decide on interval bounds of the points (interval
+//    arithmetic on the input), else on their exact coordinates (CGAL's Epeck, built where first
+//    needed), and know which points lie on one line (PlaneTraits). Points on the triangle's
+//    edges are exactly on them, so the triangulation covers the triangle exactly.
 // 3. Vertices: one per named point and sheet (the inside of a triangle, or an edge of its
 //    surface), numbered in the order of the cut triangles; coordinates are the exact points
 //    rounded to doubles, computed once per vertex from the input alone (deterministic).
