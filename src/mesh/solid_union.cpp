@@ -54,7 +54,6 @@
 
 #include <algorithm>
 #include <array>
-#include <boost/iterator/function_output_iterator.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
