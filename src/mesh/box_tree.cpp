@@ -19,6 +19,7 @@ std::uint32_t spreadBits(std::uint32_t x) {
 
 BoxTree::BoxTree(const std::vector<Box3>& boxes) {
     Box3 scene;
+    order_.reserve(boxes.size());
     for (std::uint32_t i = 0; i < boxes.size(); ++i) {
         if (boxes[i].empty()) continue;
         order_.push_back(i);
@@ -31,7 +32,7 @@ BoxTree::BoxTree(const std::vector<Box3>& boxes) {
         magnitude = std::max(
             {magnitude, scene.hi[d] - scene.lo[d], std::abs(scene.lo[d]), std::abs(scene.hi[d])});
     }
-    widen_ = 1e-9 * magnitude;
+    widen_ = widening(magnitude);
     // Morton codes of the centres on a 1024³ grid over the scene.
     std::vector<std::uint64_t> keyed(order_.size());
     for (std::size_t k = 0; k < order_.size(); ++k) {
@@ -59,7 +60,9 @@ BoxTree::BoxTree(const std::vector<Box3>& boxes) {
         }
         boxes_.push_back(box);
     }
-    nodes_.reserve(2 * (order_.size() / kLeafSize + 1));
+    // Halving leaves at least 2 boxes in a leaf (of more than kLeafSize, 3 and 2 or more):
+    // fewer than order_.size() nodes.
+    nodes_.reserve(order_.size() + 1);
     build(0, static_cast<std::uint32_t>(order_.size()));
 }
 

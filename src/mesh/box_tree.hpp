@@ -77,14 +77,8 @@ public:
         }
     }
 
-private:
-    struct Node {
-        Box3 box;
-        std::uint32_t first = 0;  // a leaf's first index into order_, else the right child
-        std::uint32_t count = 0;  // boxes in a leaf; 0 for an inner node (left child next)
-    };
-
-    // Whether the ray meets the box (slab test).
+    /// Whether the ray from `origin` along `direction` (`inverse`: 1 / each component, 0 where
+    /// that is 0) meets the box (slab test; boxes are to be widened as the tree's are).
     static bool meets(const Box3& box, const std::array<double, 3>& origin,
                       const std::array<double, 3>& direction,
                       const std::array<double, 3>& inverse) {
@@ -102,6 +96,17 @@ private:
         }
         return near <= far;
     }
+
+    /// How much the boxes are widened, for a scene whose coordinates reach `magnitude` in
+    /// absolute value (and whose extent is at most that).
+    static double widening(double magnitude) { return 1e-9 * magnitude; }
+
+private:
+    struct Node {
+        Box3 box;
+        std::uint32_t first = 0;  // a leaf's first index into order_, else the right child
+        std::uint32_t count = 0;  // boxes in a leaf; 0 for an inner node (left child next)
+    };
 
     std::uint32_t build(std::uint32_t first, std::uint32_t count);
 

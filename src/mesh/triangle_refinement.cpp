@@ -226,7 +226,7 @@ private:
 struct TriangleCut {
     std::vector<PointId> points;
     std::vector<std::array<std::uint32_t, 3>> pieces;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;
+    std::vector<RefinedTriangles::Cut> cuts;
     const char* failure = nullptr;
 };
 
@@ -263,6 +263,9 @@ struct PlaneTable {
         const int u = dropped == 0 ? 1 : 0, v = dropped == 2 ? 1 : 2;
         return {e[u], e[v]};
     }
+    // The one line that points a and b both lie on other than the triangle's edges (the
+    // intersection with another triangle: its index); kNone where there is none or more.
+    std::uint32_t intersectionThrough(std::uint32_t a, std::uint32_t b) const;
     bool onOneLine(std::initializer_list<std::uint32_t> points) const {
         const std::vector<std::uint32_t>& first = lines[*points.begin()];
         return std::any_of(first.begin(), first.end(), [&](std::uint32_t line) {
@@ -373,6 +376,18 @@ using PlaneCdt = CGAL::Constrained_Delaunay_triangulation_2<
 // another triangle (that triangle's index).
 constexpr std::uint32_t kEdgeLine = kNone - 3;  // + the edge's first corner, 0–2
 
+std::uint32_t PlaneTable::intersectionThrough(std::uint32_t a, std::uint32_t b) const {
+    std::uint32_t found = kNone;
+    for (const std::uint32_t line : lines[a]) {
+        if (line >= kEdgeLine || !std::binary_search(lines[b].begin(), lines[b].end(), line)) {
+            continue;
+        }
+        if (found != kNone) return kNone;
+        found = line;
+    }
+    return found;
+}
+
 // Cuts triangle t along the segments through it (`through`: each with the other triangle of
 // its pair), triangulated in the axis plane where t is largest.
 void cutTriangle(const Refiner& refiner, std::uint32_t t,
@@ -473,13 +488,30 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
                             d = f->vertex(2)->point().index;
         cut.pieces.push_back(flip ? std::array{a, d, b} : std::array{a, b, d});
     }
-    // CGAL's edge iterator reports an edge from the face at the lower address: sorted here.
+    // The cut edges, directed as the piece on the inner side of the other triangle uses them
+    // (RefinedTriangles::Cut). Face f lies left of its edge a → b opposite vertex i (faces are
+    // counterclockwise in the plane); a corner of t off the edge's line is on f's side or not
+    // (in the plane), and on the inner or the outer side of the other triangle (exact, on the
+    // input corners), which tells f's side without the cut points' coordinates.
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
         if (!cdt.is_constrained(*e)) continue;
         const auto [f, i] = *e;
-        cut.cuts.push_back(std::minmax(f->vertex(PlaneCdt::cw(i))->point().index,
-                                       f->vertex(PlaneCdt::ccw(i))->point().index));
+        const std::uint32_t a = f->vertex(PlaneCdt::ccw(i))->point().index;
+        const std::uint32_t b = f->vertex(PlaneCdt::cw(i))->point().index;
+        const std::uint32_t other = table.intersectionThrough(a, b);
+        if (other == kNone) throw Degenerate{"a cut edge on no single intersection"};
+        std::size_t k = 0;
+        CGAL::Orientation turn = CGAL::COLLINEAR;
+        while (k < 3 && (turn = orientation(at[a], at[b], at[k])) == CGAL::COLLINEAR) ++k;
+        const std::uint32_t* o = refiner.corners(other);
+        const CGAL::Orientation side = CGAL::orientation(refiner.point(o[0]), refiner.point(o[1]),
+                                                         refiner.point(o[2]), refiner.point(c[k]));
+        if (k == 3 || side == CGAL::COPLANAR) throw Degenerate{"a corner on an intersection"};
+        const bool inner = (side == CGAL::NEGATIVE) == (turn == CGAL::LEFT_TURN);
+        const bool forward = inner != flip;  // f's piece uses a → b unless flipped
+        cut.cuts.push_back(forward ? RefinedTriangles::Cut{a, b} : RefinedTriangles::Cut{b, a});
     }
+    // CGAL's edge iterator reports an edge from the face at the lower address: sorted here.
     std::sort(cut.cuts.begin(), cut.cuts.end());
 }
 
@@ -597,7 +629,7 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
             out.pieces.push_back(
                 {cutTriangles[i], {global[piece[0]], global[piece[1]], global[piece[2]]}});
         }
-        for (const auto& [a, b] : cut.cuts) out.cuts.emplace_back(global[a], global[b]);
+        for (const auto& [a, b] : cut.cuts) out.cuts.push_back({global[a], global[b]});
     }
     double scale = 0;
     for (const RefinementPoint& p : points) {

@@ -5,6 +5,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <array>
+#include <compare>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -14,15 +15,22 @@ namespace ramus::detail {
 using RefinementPoint = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 
 /// The pieces of the cut triangles: new points (numbered after the input's), the pieces with
-/// the input triangle each came from, and the cut edges (pairs of vertices).
+/// the input triangle each came from, and the cut edges.
 struct RefinedTriangles {
     struct Piece {
         std::uint32_t origin;
         std::array<std::uint32_t, 3> corners;
     };
+    /// An edge of pieces along an intersection, from vertex `from` to `to` as the piece on the
+    /// inner side of the other triangle (the side its normal points away from) uses it; the
+    /// piece on the outer side uses it from `to` to `from`.
+    struct Cut {
+        std::uint32_t from, to;
+        auto operator<=>(const Cut&) const = default;
+    };
     std::vector<RefinementPoint> newPoints;
     std::vector<Piece> pieces;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;
+    std::vector<Cut> cuts;
 };
 
 /// Cuts the triangles of closed surfaces (corners `fan`, three per triangle, at `points`) that

@@ -1,0 +1,46 @@
+// A hash table of indices into an array kept by the caller, who hashes and compares the items:
+// open addressing with linear probing over twice as many slots as items, no allocation per
+// item. For finding equal items among hundreds of thousands (the solid union's welds by
+// position, its sets of triangles), where sorting them had cost a comparison of whole keys per
+// step. Internal to src/mesh.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace ramus::detail {
+
+class IndexHashTable {
+public:
+    static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+    /// Room for `items` indices.
+    explicit IndexHashTable(std::size_t items)
+        : slots_(std::bit_ceil(2 * items + 2), kNone), mask_(slots_.size() - 1) {}
+
+    /// The first index stored with hash `hash` for which same(index) holds; where there is none,
+    /// stores `index` and returns it.
+    template <class Same>
+    std::uint32_t findOrAdd(std::uint64_t hash, std::uint32_t index, Same same) {
+        for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
+            if (slots_[s] == kNone) return slots_[s] = index;
+            if (same(slots_[s])) return slots_[s];
+        }
+    }
+
+    /// The first index stored with hash `hash` for which same(index) holds, else kNone.
+    template <class Same>
+    std::uint32_t find(std::uint64_t hash, Same same) const {
+        for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
+            if (slots_[s] == kNone || same(slots_[s])) return slots_[s];
+        }
+    }
+
+private:
+    std::vector<std::uint32_t> slots_;
+    std::size_t mask_;
+};
+
+}  // namespace ramus::detail
