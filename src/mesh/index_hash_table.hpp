@@ -8,6 +8,7 @@
 #include <bit>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace ramus::detail {
@@ -36,6 +37,22 @@ public:
         for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
             if (slots_[s] == kNone || same(slots_[s])) return slots_[s];
         }
+    }
+
+    /// How many indices it has room for.
+    std::size_t capacity() const { return slots_.size() / 2 - 1; }
+
+    /// Makes room for `items` indices, moving the stored ones (hashOf(index): their hashes).
+    template <class HashOf>
+    void grow(std::size_t items, HashOf hashOf) {
+        IndexHashTable grown(items);
+        for (const std::uint32_t index : slots_) {
+            if (index == kNone) continue;
+            std::size_t s = hashOf(index) & grown.mask_;
+            while (grown.slots_[s] != kNone) s = (s + 1) & grown.mask_;
+            grown.slots_[s] = index;
+        }
+        *this = std::move(grown);
     }
 
 private:

@@ -870,6 +870,31 @@ std::vector<char> classifyPatches(const RefinedSoup& soup, const SoupEdges& edge
     return keep;
 }
 
+// Output vertices by a 64-bit key, each made once.
+class VerticesByKey {
+public:
+    // The vertex made for `key`, made by make() where there is none yet.
+    template <class Make>
+    std::uint32_t get(std::uint64_t key, Make make) {
+        const auto next = static_cast<std::uint32_t>(keys_.size());
+        if (next == table_.capacity()) {
+            table_.grow(2 * next, [&](std::uint32_t j) { return detail::splitMixFinal(keys_[j]); });
+        }
+        const std::uint32_t found = table_.findOrAdd(
+            detail::splitMixFinal(key), next, [&](std::uint32_t j) { return keys_[j] == key; });
+        if (found != next) return vertices_[found];
+        keys_.push_back(key);
+        vertices_.push_back(make());
+        return vertices_.back();
+    }
+    std::size_t size() const { return keys_.size(); }
+
+private:
+    detail::IndexHashTable table_{1024};
+    std::vector<std::uint64_t> keys_;
+    std::vector<std::uint32_t> vertices_;
+};
+
 // Interpolates the input's vertex attributes at points of its triangles into a new mesh.
 class CornerWriter {
 public:
@@ -888,12 +913,8 @@ public:
             const Vec3& c = moved_[3 * std::size_t{t} + k];
             if (c.x() == p.x() && c.y() == p.y() && c.z() == p.z()) return copy(tri[k], vertex, c);
         }
-        const std::uint64_t key = std::uint64_t{vertex} << 32 | t;
-        const auto found = interpolated_.find(key);
-        if (found != interpolated_.end()) return found->second;
-        const std::uint32_t made = interpolate(t, Vec3(p.x(), p.y(), p.z()));
-        interpolated_.emplace(key, made);
-        return made;
+        return interpolated_.get(std::uint64_t{vertex} << 32 | t,
+                                 [&] { return interpolate(t, Vec3(p.x(), p.y(), p.z())); });
     }
 
     std::size_t interpolatedCount() const { return interpolated_.size(); }
@@ -901,13 +922,11 @@ public:
 private:
     // Input vertex `v` at refined vertex `vertex` (moved to `p`).
     std::uint32_t copy(std::uint32_t v, std::uint32_t vertex, const Vec3& p) {
-        const std::uint64_t key = std::uint64_t{v} << 32 | vertex;
-        const auto found = copied_.find(key);
-        if (found != copied_.end()) return found->second;
-        const std::uint32_t made = appendVertexCopy(out_, in_, v);
-        out_.positions[made] = p.cast<float>();
-        copied_.emplace(key, made);
-        return made;
+        return copied_.get(std::uint64_t{v} << 32 | vertex, [&] {
+            const std::uint32_t made = appendVertexCopy(out_, in_, v);
+            out_.positions[made] = p.cast<float>();
+            return made;
+        });
     }
 
     std::uint32_t interpolate(std::uint32_t t, const Vec3& p) {
@@ -972,8 +991,8 @@ private:
     const Mesh& in_;
     const std::vector<Vec3>& moved_;  // per input corner: its moved position (floats)
     Mesh& out_;
-    std::unordered_map<std::uint64_t, std::uint32_t> copied_;  // (input, refined vertex) → output
-    std::unordered_map<std::uint64_t, std::uint32_t> interpolated_;  // (vertex, triangle) → output
+    VerticesByKey copied_;        // by (input vertex, refined vertex)
+    VerticesByKey interpolated_;  // by (refined vertex, input triangle)
 };
 
 // Directed edges a→b of the triangles over welded vertex ids, sorted: (a, b) and, to tell apart
