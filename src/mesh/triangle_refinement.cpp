@@ -28,9 +28,9 @@
 #include <exception>
 #include <limits>
 #include <optional>
-#include <unordered_map>
 
 #include "fixed_hash.hpp"
+#include "index_hash_table.hpp"
 #include "on_cores.hpp"
 
 namespace ramus::detail {
@@ -537,17 +537,29 @@ std::uint32_t sheetOf(const PointId& id, std::uint32_t t) {
     return t;
 }
 
-// The exact value rounded to a double: the middle of its bounds where they are closer than
-// kRoundingWidth times the input's largest coordinate `scale` (far below a float's precision,
-// which the union's output has; the point is built afresh, so the bounds depend on the input
-// alone), else from the exact value (ABOP 1.24a: 66 k of 806 k coordinates with bounds wider
-// than 1e-12 of their value had taken 1.6 s).
+// A new point rounded to doubles, per coordinate: the middle of its interval bounds
+// (Refiner::bounds, interval arithmetic on the input) where they are closer than kRoundingWidth
+// times the input's largest coordinate `scale` (far below a float's precision, which the union's
+// output has), else the exact value rounded (ABOP 1.24a: 66 k of 806 k coordinates with bounds
+// wider than 1e-12 of their value had taken 1.6 s). Either depends on the input alone. Until
+// session 32 the bounds were those of the lazy exact point, which was built for every point
+// (0.12 s of 1.24a's refinement).
 constexpr double kRoundingWidth = 1e-10;
 
-double rounded(const Exact::FT& x, double scale) {
-    const CGAL::Interval_nt<false>& i = x.approx();
-    if (i.sup() - i.inf() <= kRoundingWidth * scale) return 0.5 * (i.inf() + i.sup());
-    return CGAL::to_double(x.exact());
+RefinementPoint roundedPoint(const Refiner& refiner, const PointId& id, double scale) {
+    const auto bounds = refiner.bounds(id);
+    std::array<double, 3> at;
+    std::optional<ExactPoint> exact;
+    for (int d = 0; d < 3; ++d) {
+        const auto& i = bounds[static_cast<std::size_t>(d)];
+        if (i.sup() - i.inf() <= kRoundingWidth * scale) {
+            at[static_cast<std::size_t>(d)] = 0.5 * (i.inf() + i.sup());
+            continue;
+        }
+        if (!exact) exact = refiner.exactPoint(id);
+        at[static_cast<std::size_t>(d)] = CGAL::to_double(CGAL::exact((*exact)[d]));
+    }
+    return RefinementPoint(at[0], at[1], at[2]);
 }
 
 }  // namespace
@@ -604,11 +616,11 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
 
     // Vertices: the input's corners keep their index; the others are numbered as they come.
     const auto inputPoints = static_cast<std::uint32_t>(points.size());
-    std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> vertexOf;
     std::size_t cutPoints = 0;  // with repeats: an upper bound of the vertices
     for (const TriangleCut& cut : cuts) cutPoints += cut.points.size() - 3;
-    vertexOf.reserve(cutPoints);
-    std::vector<PointId> newPointIds;
+    IndexHashTable vertexOf(cutPoints);  // indices into newVertices
+    std::vector<VertexKey> newVertices;
+    newVertices.reserve(cutPoints);
     std::vector<std::uint32_t> global;
     for (std::size_t i = 0; i < cuts.size(); ++i) {
         const TriangleCut& cut = cuts[i];
@@ -619,11 +631,12 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
                 global.push_back(id.of[0]);
                 continue;
             }
-            const auto [it, added] =
-                vertexOf.try_emplace(VertexKey{id, sheetOf(id, cutTriangles[i])},
-                                     inputPoints + static_cast<std::uint32_t>(newPointIds.size()));
-            if (added) newPointIds.push_back(id);
-            global.push_back(it->second);
+            const VertexKey key{id, sheetOf(id, cutTriangles[i])};
+            const auto next = static_cast<std::uint32_t>(newVertices.size());
+            const std::uint32_t vertex = vertexOf.findOrAdd(
+                VertexKeyHash{}(key), next, [&](std::uint32_t j) { return newVertices[j] == key; });
+            if (vertex == next) newVertices.push_back(key);
+            global.push_back(inputPoints + vertex);
         }
         for (const auto& piece : cut.pieces) {
             out.pieces.push_back(
@@ -635,13 +648,11 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
     for (const RefinementPoint& p : points) {
         scale = std::max({scale, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
     }
-    out.newPoints.resize(newPointIds.size());
-    std::vector<const char*> pointFailures(newPointIds.size(), nullptr);
-    forEachOnCores(newPointIds.size(), [&](std::size_t i) {
+    out.newPoints.resize(newVertices.size());
+    std::vector<const char*> pointFailures(newVertices.size(), nullptr);
+    forEachOnCores(newVertices.size(), [&](std::size_t i) {
         try {
-            const ExactPoint p = refiner.exactPoint(newPointIds[i]);
-            out.newPoints[i] = RefinementPoint(rounded(p.x(), scale), rounded(p.y(), scale),
-                                               rounded(p.z(), scale));
+            out.newPoints[i] = roundedPoint(refiner, newVertices[i].point, scale);
         } catch (const Degenerate& d) {
             pointFailures[i] = d.why;
         }
