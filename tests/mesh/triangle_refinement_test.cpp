@@ -154,6 +154,32 @@ void expectValidRefinement(const Surfaces& s, const Refined& r) {
         ++cutsByPosition[std::minmax(pa, qa)];
     }
     for (const auto& [segment, count] : cutsByPosition) EXPECT_EQ(count, 2);
+
+    // Each cut runs as the piece on the inner side of the surface that cuts it uses it: across
+    // the cut, the number of other boxes holding a piece's centre goes up by one from the piece
+    // using it the other way (what the union's winding numbers follow, solid_union.cpp).
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> faceUsing;
+    for (std::size_t f = 0; f < r.faces.size(); ++f) {
+        for (int k = 0; k < 3; ++k) faceUsing[{r.faces[f][k], r.faces[f][(k + 1) % 3]}] = f;
+    }
+    auto boxesHolding = [&](std::size_t face) {
+        const auto& f = r.faces[face];
+        const RefinementPoint centre =
+            CGAL::centroid(r.points[f[0]], r.points[f[1]], r.points[f[2]]);
+        std::map<std::uint32_t, bool> holds;  // per other surface: the centre behind every face
+        for (std::uint32_t t = 0; t < s.surfaceOf.size(); ++t) {
+            if (s.surfaceOf[t] == r.faceSurface[face]) continue;
+            const auto tri = triangle(s, t);
+            const bool behind = CGAL::orientation(tri[0], tri[1], tri[2], centre) == CGAL::NEGATIVE;
+            holds.try_emplace(s.surfaceOf[t], true).first->second &= behind;
+        }
+        return std::count_if(holds.begin(), holds.end(), [](const auto& h) { return h.second; });
+    };
+    for (const auto& [a, b] : r.result.cuts) {
+        ASSERT_TRUE(faceUsing.count({a, b}) && faceUsing.count({b, a}));
+        EXPECT_EQ(boxesHolding(faceUsing.at({a, b})), boxesHolding(faceUsing.at({b, a})) + 1)
+            << "cut " << a << " → " << b;
+    }
 }
 
 TEST(TriangleRefinement, TwoTurnedBoxesThroughEachOther) {
