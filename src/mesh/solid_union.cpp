@@ -129,45 +129,6 @@ std::vector<std::uint32_t> weldByPosition(const std::vector<Vec3f>& positions,
     return id;
 }
 
-// Triangles by the positions of their corners (bit-exact, +0.0 and -0.0 alike), each in its
-// winding order from its smallest corner: added, sealed, then searched (a hash table).
-class TriangleSet {
-public:
-    using Key = std::array<std::uint32_t, 9>;
-
-    static Key keyOf(const Vec3f& a, const Vec3f& b, const Vec3f& c) {
-        std::array<PositionBits, 3> corners{bitsOf(a), bitsOf(b), bitsOf(c)};
-        std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()),
-                    corners.end());
-        Key key;
-        for (std::size_t k = 0; k < 9; ++k) key[k] = corners[k / 3][k % 3];
-        return key;
-    }
-    static Key keyOf(const Mesh& mesh, std::size_t t) {
-        const std::uint32_t* tri = &mesh.indices[3 * t];
-        return keyOf(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]);
-    }
-    void add(const Key& key) { keys_.push_back(key); }
-    void seal() {  // after the last add
-        table_.emplace(keys_.size());
-        for (std::uint32_t i = 0; i < keys_.size(); ++i) {
-            table_->findOrAdd(hashOf(keys_[i]), i,
-                              [&](std::uint32_t j) { return keys_[j] == keys_[i]; });
-        }
-    }
-    bool empty() const { return keys_.empty(); }
-    bool contains(const Key& key) const {
-        return table_->find(hashOf(key), [&](std::uint32_t j) { return keys_[j] == key; }) !=
-               detail::IndexHashTable::kNone;
-    }
-
-private:
-    static std::uint64_t hashOf(const Key& key) { return hashOfWords(key.data(), key.size()); }
-
-    std::vector<Key> keys_;
-    std::optional<detail::IndexHashTable> table_;
-};
-
 std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
@@ -230,6 +191,15 @@ void keepTriangles(Mesh& mesh, const std::vector<char>& keep) {
     std::erase_if(mesh.primitives, [](const MeshPrimitive& p) { return p.indexCount == 0; });
 
     removeUnusedVertices(mesh);
+}
+
+// Keeps the flags of the triangles with keep[t], as keepTriangles keeps the triangles.
+void keepFlags(std::vector<char>& flags, const std::vector<char>& keep) {
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < flags.size(); ++t) {
+        if (keep[t]) flags[kept++] = flags[t];
+    }
+    flags.resize(kept);
 }
 
 // Per triangle: whether it is kept when pieces so thin that rounding the new positions to
@@ -1282,14 +1252,15 @@ Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
 }
 
 // One attempt on the closed surfaces `input` of `mesh` with the positions moved by up to
-// `jitter` (fraction of the mesh's extent) with hash salt `salt`. `uncrossed` gets the moved
-// input triangles that intersected nothing, where the union cut anything. `cut` gets the number
+// `jitter` (fraction of the mesh's extent) with hash salt `salt`. `suspect` gets, where the union
+// cut anything, per triangle of the result whether it is a piece of a cut one (the others are
+// input triangles that intersected nothing, where they were). `cut` gets the number
 // of input triangles that intersect others after the move; where that is more than `cutLimit`,
 // nothing more is done (Outcome::postponed). When done, `result` gets the closed surfaces of
 // the new mesh.
 Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report, double jitter,
                      std::uint64_t salt, std::size_t cutLimit, std::size_t& cut,
-                     TriangleSet& uncrossed, Surfaces& result) {
+                     std::vector<char>& suspect, Surfaces& result) {
     const std::vector<std::uint32_t>& fan = input.fan;
     const std::uint32_t vertices = input.vertices;
 
@@ -1340,12 +1311,6 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
         result = input;
         return Outcome::done;
     }
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        if (intersecting[t]) continue;
-        const std::uint32_t* v = &fan[3 * t];
-        uncrossed.add(TriangleSet::keyOf(movedFloat[v[0]], movedFloat[v[1]], movedFloat[v[2]]));
-    }
-    uncrossed.seal();
     canonicalOrder(soup);
 
     // 3. Patches on the union's boundary.
@@ -1369,6 +1334,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     CornerWriter writer(mesh, moved, out);
     const std::size_t primitiveCount = std::max<std::size_t>(mesh.primitives.size(), 1);
     std::vector<std::vector<std::uint32_t>> byPrimitive(primitiveCount);
+    std::vector<std::vector<char>> piecesByPrimitive(primitiveCount);
     for (std::size_t f = 0; f < soup.faces.size(); ++f) {
         if (!keep[patch[f]]) continue;
         const std::uint32_t t = soup.faces[f].origin;
@@ -1376,10 +1342,13 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
         for (const std::uint32_t v : soup.faces[f].corners) {
             indices.push_back(writer.corner(t, v, soup.points[v]));
         }
+        piecesByPrimitive[primitiveOf[t]].push_back(intersecting[t]);
     }
+    suspect.clear();
     for (std::size_t p = 0; p < primitiveCount; ++p) {
         const auto first = static_cast<std::uint32_t>(out.indices.size());
         out.indices.insert(out.indices.end(), byPrimitive[p].begin(), byPrimitive[p].end());
+        suspect.insert(suspect.end(), piecesByPrimitive[p].begin(), piecesByPrimitive[p].end());
         if (mesh.primitives.empty() || byPrimitive[p].empty()) continue;
         MeshPrimitive prim = mesh.primitives[p];
         prim.firstIndex = first;
@@ -1394,6 +1363,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     const std::vector<char> uncollapsed = uncollapsedTriangles(outWeld, out.indices);
     if (std::find(uncollapsed.begin(), uncollapsed.end(), 0) != uncollapsed.end()) {
         keepTriangles(out, uncollapsed);
+        keepFlags(suspect, uncollapsed);
         if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
         outWeld = weldByPosition(out.positions, &outDistinct);
     }
@@ -1404,6 +1374,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     const std::vector<char> outer = outerSurfaces(out, surfaces.weld, surfaces.positions, report);
     if (std::find(outer.begin(), outer.end(), 0) != outer.end()) {
         keepTriangles(out, outer);
+        keepFlags(suspect, outer);
         if (out.indices.empty()) return failWith(report, "no surface was left", Outcome::retry);
         surfaces = surfacesOf(out);
     }
@@ -1512,17 +1483,6 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
     }
 #endif
     return crossing;
-}
-
-// Per triangle of `mesh`: whether it is not in `uncrossed` (every one where that is empty: a
-// result of nothing but untouched input triangles is not searched by parts).
-std::vector<char> trianglesNotIn(const Mesh& mesh, const TriangleSet& uncrossed) {
-    if (uncrossed.empty()) return {};
-    std::vector<char> suspect(mesh.triangleCount());
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        suspect[t] = !uncrossed.contains(TriangleSet::keyOf(mesh, t));
-    }
-    return suspect;
 }
 
 // Per triangle of `mesh`: whether it is in one of the pairs `crossing` (all its crossing pairs)
@@ -1714,13 +1674,14 @@ void dropPartedPieces(Mesh& mesh, Surfaces& surfaces, std::vector<detail::Triang
 // 6. Moves corners a few float steps (crossing_repair.hpp) to separate the crossing pairs of the
 // closed surfaces `surfaces` of `mesh`, then to part sheets pinched together along an edge;
 // `report` gets the moves and what is left: crossings (counted again over the whole mesh) and
-// pinched edges; `left` the crossing pairs left.
-void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const TriangleSet& uncrossed,
+// pinched edges; `left` the crossing pairs left. `pieces`: per triangle whether it is a piece of
+// a cut one (unionAttempt's `suspect`; the others crossed nothing, so the first search looks
+// only at pairs with a piece), empty to search the whole mesh.
+void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const std::vector<char>& pieces,
                              SolidUnionReport& report, std::vector<detail::TrianglePair>& left) {
     const double extent = mesh.bounds().extent().maxCoeff();
     splitSharedMeshVertices(mesh, surfaces);
-    std::vector<detail::TrianglePair> crossing =
-        crossingPairs(mesh, surfaces, trianglesNotIn(mesh, uncrossed));
+    std::vector<detail::TrianglePair> crossing = crossingPairs(mesh, surfaces, pieces);
     std::size_t touching = touchingPoints(mesh, surfaces);
     const bool touched = touching > 0;
     // Moves `surface` (crossingSurfaceOf(mesh, surfaces), moved by `repair`) into the mesh and
@@ -1874,11 +1835,11 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
         SolidUnionReport tried;  // each attempt counts its own patches, pockets and slivers
         tried.inputComponents = r.inputComponents;
         Mesh trial = mesh;
-        TriangleSet uncrossed;
+        std::vector<char> suspect;
         std::size_t cut = 0;
         Surfaces surfaces;
         const Outcome outcome = unionAttempt(trial, input, tried, move.jitter, move.salt, cutLimit,
-                                             cut, uncrossed, surfaces);
+                                             cut, suspect, surfaces);
         if (outcome == Outcome::postponed) {
             postponed.push_back(move);
             return outcome;
@@ -1887,7 +1848,7 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
         r.failure = tried.failure;
         if (outcome != Outcome::done) return outcome;
         std::vector<detail::TrianglePair> left;
-        separateRoundingDefects(trial, std::move(surfaces), uncrossed, tried, left);
+        separateRoundingDefects(trial, std::move(surfaces), suspect, tried, left);
         if (!best || tried.defects() < bestReport.defects()) {
             best = std::move(trial);
             bestReport = tried;
@@ -1907,17 +1868,17 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
             }
             SolidUnionReport tried;
             tried.inputComponents = bestReport.outputComponents;
-            TriangleSet uncrossed;
+            std::vector<char> suspect;
             std::size_t cut = 0;
             ++r.reunions;
             Surfaces united;
             if (unionAttempt(trial, surfaces, tried, 0.0, 0,
-                             std::numeric_limits<std::size_t>::max(), cut, uncrossed,
+                             std::numeric_limits<std::size_t>::max(), cut, suspect,
                              united) != Outcome::done) {
                 return;
             }
             std::vector<detail::TrianglePair> left;
-            separateRoundingDefects(trial, std::move(united), uncrossed, tried, left);
+            separateRoundingDefects(trial, std::move(united), suspect, tried, left);
             if (tried.defects() >= bestReport.defects()) continue;
             best = std::move(trial);
             bestCrossing = std::move(left);
