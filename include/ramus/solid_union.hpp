@@ -3,8 +3,9 @@
 // crossing limbs of dense L-systems) or one piece that runs through itself (branches crossing
 // in the skeleton), the surface of the union of the solids they bound replaces them: no
 // triangle pierces another, every edge is shared by two triangles, and pieces that overlap
-// become one surface. CGAL's autorefinement (Polygon Mesh Processing) cuts the triangles along
-// their intersection curves; a winding number per patch keeps the outer ones (Zhou, Grinspun,
+// become one surface. The intersecting triangles are cut along their intersection curves (exact
+// predicates, a constrained triangulation per cut triangle); a winding number per patch, carried
+// across the curves from one ray per connected part, keeps the outer ones (Zhou, Grinspun,
 // Zorin, Jacobson 2016, "Mesh arrangements for solid geometry", §4).
 #pragma once
 

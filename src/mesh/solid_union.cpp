@@ -18,10 +18,13 @@
 //    pairs; on a tree a few percent of the mesh), the rest staying as they are; each piece
 //    keeps the index of the input triangle it came from (triangle_refinement.hpp).
 // 3. Patches: connected regions between intersection edges. The winding number of the whole
-//    input is constant on each side of a patch; one ray from the centre of the patch's largest
-//    triangle, roughly along its normal, counts signed crossings (+1 leaving a surface): the
-//    patch bounds the union iff the count outside it is 0. A ray through an edge or corner
-//    (counted twice or not at all) is found by exact predicates and another ray is cast.
+//    input is constant on each side of a patch, and the patch bounds the union iff it is 0
+//    outside it. Across an intersection edge it changes by one along the sheet (the refinement
+//    tells which side of the cutting triangle each piece is on), so it is carried from patch to
+//    patch; one ray per connected part of the input, from the centre of a patch's largest
+//    triangle roughly along its normal, counts signed crossings with the input triangles (+1
+//    leaving a surface). A ray through an edge or corner (counted twice or not at all) is found
+//    by exact predicates and another ray is cast. Until session 32 every patch had its ray.
 // 4. Kept pieces become output triangles; corners interpolate the attributes of the input
 //    triangle the piece came from (corners that are input corners copy them exactly).
 // 5. Check: every edge welded by position is used as often in one direction as in the other
