@@ -240,8 +240,8 @@ std::vector<detail::Box3> triangleBoxes(std::size_t triangles, PointOf point, In
 // they make at a ray's start (all wound outward), with chosen triangles left out. Where many
 // rays are cast, over a tree of the triangles' boxes (detail::BoxTree; CGAL's AABB tree until
 // session 31), built at once so that threads can cast rays together; for a few, every
-// triangle's box is tested instead (building the tree over tree_3d's 230 k triangles takes about
-// as long as 40 such rays).
+// triangle's box is tested instead (a tree over 230 k boxes took 0.03 s to build, 0.09 s in
+// fresh memory, session 32; tree_3d casts one ray).
 class RayCrossings {
 public:
     // The triangles `faces`, corners into `points` (which must outlive this).
