@@ -466,7 +466,7 @@ constexpr double kSliverVolume = 1e-6;
 // overlapping tubes enclose without covering it, plus any piece inside such a pocket. A pocket's
 // surface has negative volume (summed about its own first corner, so that tiny pockets far from
 // the origin keep their sign); a piece inside one has winding number ≥ 1 with respect to the
-// rest once the pockets are gone (a ray, as for the patches: byRays). Both are removed: the
+// rest once the pockets are gone (rays, as for the patches: windingByRays). Both are removed: the
 // pockets are filled, as hidden inner geometry is nothing an engine or a printer wants.
 // Slivers (kSliverVolume) are removed too.
 std::vector<char> outerSurfaces(const Mesh& mesh, const std::vector<std::uint32_t>& weld,
@@ -713,10 +713,10 @@ bool eachEdgeOnce(const std::vector<std::uint32_t>& fan, std::uint32_t vertices)
 // another triangle other than in the corners or edge they share (CGAL's self-intersection test,
 // exact predicates): the triangles the refinement cuts. The reference for
 // intersectingTriangles.
-std::vector<char> intersectingFaces(const std::vector<Vec3>& points,
+std::vector<char> intersectingFaces(const std::vector<Point>& points,
                                     const std::vector<std::uint32_t>& fan) {
     SurfaceMesh m;
-    for (const Vec3& p : points) m.add_vertex(Point(p.x(), p.y(), p.z()));
+    for (const Point& p : points) m.add_vertex(p);
     for (std::size_t t = 0; 3 * t < fan.size(); ++t) {
         const FaceIndex f = m.add_face(VertexIndex(fan[3 * t]), VertexIndex(fan[3 * t + 1]),
                                        VertexIndex(fan[3 * t + 2]));
@@ -929,8 +929,10 @@ private:
 // Interpolates the input's vertex attributes at points of its triangles into a new mesh.
 class CornerWriter {
 public:
-    CornerWriter(const Mesh& input, const std::vector<Vec3>& movedCorners, Mesh& output)
-        : in_(input), moved_(movedCorners), out_(output) {
+    // `moved`: per surface vertex its moved position; `fan`: per input corner its surface vertex.
+    CornerWriter(const Mesh& input, const std::vector<Point>& moved,
+                 const std::vector<std::uint32_t>& fan, Mesh& output)
+        : in_(input), moved_(moved), fan_(fan), out_(output) {
         for (const VertexAttribute& a : input.attributes) {
             out_.attributes.push_back({a.name, a.components, {}});
         }
@@ -941,7 +943,7 @@ public:
     std::uint32_t corner(std::uint32_t t, std::uint32_t vertex, const Point& p) {
         const std::uint32_t* tri = &in_.indices[3 * std::size_t{t}];
         for (int k = 0; k < 3; ++k) {
-            const Vec3& c = moved_[3 * std::size_t{t} + k];
+            const Vec3 c = movedCorner(3 * std::size_t{t} + k);
             if (c.x() == p.x() && c.y() == p.y() && c.z() == p.z()) return copy(tri[k], vertex, c);
         }
         return interpolated_.get(std::uint64_t{vertex} << 32 | t,
@@ -962,9 +964,9 @@ private:
 
     std::uint32_t interpolate(std::uint32_t t, const Vec3& p) {
         const std::uint32_t* tri = &in_.indices[3 * std::size_t{t}];
-        const Vec3& a = moved_[3 * std::size_t{t}];
-        const Vec3& b = moved_[3 * std::size_t{t} + 1];
-        const Vec3& c = moved_[3 * std::size_t{t} + 2];
+        const Vec3 a = movedCorner(3 * std::size_t{t});
+        const Vec3 b = movedCorner(3 * std::size_t{t} + 1);
+        const Vec3 c = movedCorner(3 * std::size_t{t} + 2);
         const Vec3 normal = (b - a).cross(c - a);
         std::array<double, 3> w = {(b - p).cross(c - p).dot(normal),
                                    (c - p).cross(a - p).dot(normal),
@@ -1020,7 +1022,14 @@ private:
     }
 
     const Mesh& in_;
-    const std::vector<Vec3>& moved_;  // per input corner: its moved position (floats)
+    // Input corner c's moved position (floats).
+    Vec3 movedCorner(std::size_t c) const {
+        const Point& p = moved_[fan_[c]];
+        return {p.x(), p.y(), p.z()};
+    }
+
+    const std::vector<Point>& moved_;        // per surface vertex
+    const std::vector<std::uint32_t>& fan_;  // per input corner: its surface vertex
     Mesh& out_;
     VerticesByKey copied_;        // by (input vertex, refined vertex)
     VerticesByKey interpolated_;  // by (refined vertex, input triangle)
@@ -1281,21 +1290,17 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
         movedFloat[v] = hashMoved(mesh.positions[mesh.indices[c]], v, step, salt);
         made[v] = 1;
     }
-    std::vector<Vec3> movedVertex(vertices);
-    for (std::uint32_t v = 0; v < vertices; ++v) movedVertex[v] = movedFloat[v].cast<double>();
-    std::vector<Vec3> moved(mesh.indices.size());  // per corner
-    for (std::size_t c = 0; c < mesh.indices.size(); ++c) moved[c] = movedVertex[fan[c]];
     if (!eachEdgeOnce(fan, vertices)) {
         return failWith(report, "the input is not 2-manifold", Outcome::badInput);
     }
 
     // 2. Cut the triangles along their intersections.
-    std::vector<Point> points;
+    std::vector<Point> points;  // per surface vertex: its moved position
     points.reserve(vertices);
-    for (const Vec3& p : movedVertex) points.emplace_back(p.x(), p.y(), p.z());
+    for (const Vec3f& p : movedFloat) points.emplace_back(p.x(), p.y(), p.z());
     const Intersections intersections = intersectingTriangles(points, fan);
     const std::vector<char>& intersecting = intersections.cut;
-    RAMUS_ASSERT(intersecting == intersectingFaces(movedVertex, fan));
+    RAMUS_ASSERT(intersecting == intersectingFaces(points, fan));
     cut = static_cast<std::size_t>(std::count(intersecting.begin(), intersecting.end(), 1));
     if (cut > cutLimit) return Outcome::postponed;
     if (cut == 0) {
@@ -1334,7 +1339,7 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     Mesh out;
     out.name = mesh.name;
     out.materials = mesh.materials;
-    CornerWriter writer(mesh, moved, out);
+    CornerWriter writer(mesh, points, fan, out);
     const std::size_t primitiveCount = std::max<std::size_t>(mesh.primitives.size(), 1);
     std::vector<std::vector<std::uint32_t>> byPrimitive(primitiveCount);
     std::vector<std::vector<char>> piecesByPrimitive(primitiveCount);
