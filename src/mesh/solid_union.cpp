@@ -1268,11 +1268,11 @@ Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
 // cut anything, per triangle of the result whether it is a piece of a cut one (the others are
 // input triangles that intersected nothing, where they were). `cut` gets the number
 // of input triangles that intersect others after the move; where that is more than `cutLimit`,
-// nothing more is done (Outcome::postponed). When done, `result` gets the closed surfaces of
-// the new mesh.
-Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report, double jitter,
-                     std::uint64_t salt, std::size_t cutLimit, std::size_t& cut,
-                     std::vector<char>& suspect, Surfaces& result) {
+// nothing more is done (Outcome::postponed). When done, `united` gets the new mesh (the input
+// where nothing was cut) and `unitedSurfaces` its closed surfaces.
+Outcome unionAttempt(const Mesh& mesh, const Surfaces& input, SolidUnionReport& report,
+                     double jitter, std::uint64_t salt, std::size_t cutLimit, std::size_t& cut,
+                     Mesh& united, std::vector<char>& suspect, Surfaces& unitedSurfaces) {
     const std::vector<std::uint32_t>& fan = input.fan;
     const std::uint32_t vertices = input.vertices;
 
@@ -1306,7 +1306,8 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     if (cut == 0) {
         report.outputComponents = report.inputComponents;  // nothing intersects: keep the input
         report.patches = report.keptPatches = report.outputComponents;
-        result = input;
+        united = mesh;
+        unitedSurfaces = input;
         return Outcome::done;
     }
     RefinedSoup soup;
@@ -1316,7 +1317,8 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
     if (soup.faces.size() == mesh.triangleCount() && soup.points.size() == vertices) {
         report.outputComponents = report.inputComponents;  // nothing was cut: keep the input
         report.patches = report.keptPatches = report.outputComponents;
-        result = input;
+        united = mesh;
+        unitedSurfaces = input;
         return Outcome::done;
     }
     canonicalOrder(soup);
@@ -1387,8 +1389,8 @@ Outcome unionAttempt(Mesh& mesh, const Surfaces& input, SolidUnionReport& report
         surfaces = surfacesOf(out);
     }
     report.outputComponents = countComponents(surfaces.weld, surfaces.positions, out.indices);
-    mesh = std::move(out);
-    result = std::move(surfaces);
+    united = std::move(out);
+    unitedSurfaces = std::move(surfaces);
     return Outcome::done;
 }
 
@@ -1842,12 +1844,12 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
     auto attempt = [&](const UnionMove& move, std::size_t cutLimit) {
         SolidUnionReport tried;  // each attempt counts its own patches, pockets and slivers
         tried.inputComponents = r.inputComponents;
-        Mesh trial = mesh;
+        Mesh trial;
         std::vector<char> suspect;
         std::size_t cut = 0;
         Surfaces surfaces;
-        const Outcome outcome = unionAttempt(trial, input, tried, move.jitter, move.salt, cutLimit,
-                                             cut, suspect, surfaces);
+        const Outcome outcome = unionAttempt(mesh, input, tried, move.jitter, move.salt, cutLimit,
+                                             cut, trial, suspect, surfaces);
         if (outcome == Outcome::postponed) {
             postponed.push_back(move);
             return outcome;
@@ -1868,9 +1870,9 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
     // by `move`, up to maxReunions times while it has defects; a result with fewer replaces it.
     auto reunite = [&](const UnionMove& move) {
         for (std::size_t round = 0; round < maxReunions && !clean(); ++round) {
-            Mesh trial = *best;
-            Surfaces surfaces = surfacesOf(trial);
-            if (!surfaces.closed || !moveDefectVertices(trial, surfaces, bestCrossing, move.jitter,
+            Mesh moved = *best;
+            Surfaces surfaces = surfacesOf(moved);
+            if (!surfaces.closed || !moveDefectVertices(moved, surfaces, bestCrossing, move.jitter,
                                                         move.salt + kReunionSalt * (round + 1))) {
                 return;
             }
@@ -1879,9 +1881,10 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
             std::vector<char> suspect;
             std::size_t cut = 0;
             ++r.reunions;
+            Mesh trial;
             Surfaces united;
-            if (unionAttempt(trial, surfaces, tried, 0.0, 0,
-                             std::numeric_limits<std::size_t>::max(), cut, suspect,
+            if (unionAttempt(moved, surfaces, tried, 0.0, 0,
+                             std::numeric_limits<std::size_t>::max(), cut, trial, suspect,
                              united) != Outcome::done) {
                 return;
             }
