@@ -8,14 +8,13 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <unordered_map>
 
 #include "box_tree.hpp"
-#include "ramus/rng.hpp"
+#include "position_bits.hpp"
 
 namespace ramus::detail {
 namespace {
@@ -230,37 +229,19 @@ bool Separator::unpinch(std::uint32_t v) {
     return tryMoves(v, before);
 }
 
-// Bit patterns of a position, as the solid union welds them (+0.0 and -0.0 alike).
-struct PositionKey {
-    std::array<std::uint32_t, 3> bits;
-    bool operator==(const PositionKey&) const = default;
-};
-
-PositionKey keyOf(const Vec3f& position) {
-    const Vec3f p = position + Vec3f::Zero();
-    return {std::bit_cast<std::uint32_t>(p.x()), std::bit_cast<std::uint32_t>(p.y()),
-            std::bit_cast<std::uint32_t>(p.z())};
-}
-
-struct PositionKeyHash {
-    std::size_t operator()(const PositionKey& k) const {
-        return hashCombine(hashCombine(k.bits[0], k.bits[1]), k.bits[2]);
-    }
-};
-
 // Moves the listed vertices in order, each only while another surface vertex still shares its
 // position: once one corner of a pinched pair has moved, its partner stays (a caller may list
 // both sheets' corners, the preferred sheet first, so that the other moves where a corner of the
 // first cannot).
 CrossingRepair Separator::unpinchAll(std::span<const std::uint32_t> vertices) {
-    std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> sharing;
-    for (std::uint32_t v : vertices) sharing.emplace(keyOf(s_.points[v]), 0);
+    std::unordered_map<PositionBits, std::uint32_t, PositionBitsHash> sharing;
+    for (std::uint32_t v : vertices) sharing.emplace(bitsOf(s_.points[v]), 0);
     for (const Vec3f& p : s_.points) {
-        if (auto it = sharing.find(keyOf(p)); it != sharing.end()) ++it->second;
+        if (auto it = sharing.find(bitsOf(p)); it != sharing.end()) ++it->second;
     }
     CrossingRepair repair;
     for (std::uint32_t v : vertices) {
-        std::uint32_t& shared = sharing.at(keyOf(original_[v]));
+        std::uint32_t& shared = sharing.at(bitsOf(original_[v]));
         if (shared < 2 || s_.points[v] != original_[v] || !movable(v) || !unpinch(v)) continue;
         --shared;
         ++repair.movedVertices;

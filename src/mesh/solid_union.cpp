@@ -59,7 +59,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <exception>
 #include <iterator>
 #include <limits>
@@ -76,6 +75,7 @@
 #include "fixed_hash.hpp"
 #include "index_hash_table.hpp"
 #include "on_cores.hpp"
+#include "position_bits.hpp"
 #include "triangle_refinement.hpp"
 
 namespace ramus {
@@ -94,21 +94,9 @@ constexpr std::uint32_t kUnknown = std::numeric_limits<std::uint32_t>::max();
 // The corner after corner c in its triangle.
 std::uint32_t nextCorner(std::uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; }
 
-// The bits of a position, +0.0 and -0.0 alike.
-using PositionBits = std::array<std::uint32_t, 3>;
-PositionBits bitsOf(const Vec3f& position) {
-    const Vec3f p = position + Vec3f::Zero();  // -0.0 + 0.0 = +0.0
-    PositionBits bits;
-    std::memcpy(bits.data(), p.data(), sizeof(bits));
-    return bits;
-}
-
-// A hash of `n` 32-bit words, every bit of each stirred into all.
-std::uint64_t hashOfWords(const std::uint32_t* words, std::size_t n) {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (std::size_t k = 0; k < n; ++k) h = detail::splitMixFinal(h ^ words[k]);
-    return h;
-}
+using detail::bitsOf;
+using detail::hashOfWords;
+using detail::PositionBits;
 
 // Per vertex: the index of its position among the distinct positions (bit-exact), numbered
 // in order of first appearance (a hash table: sorting the positions had taken a third of the
