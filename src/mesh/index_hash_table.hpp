@@ -1,8 +1,8 @@
 // A hash table of indices into an array kept by the caller, who hashes and compares the items:
 // open addressing with linear probing over twice as many slots as items, no allocation per
 // item. For finding equal items among hundreds of thousands (the solid union's welds by
-// position, its sets of triangles), where sorting them had cost a comparison of whole keys per
-// step. Internal to src/mesh.
+// position and vertex maps, the refinement's vertices), where sorting them had cost a comparison
+// of whole keys per step. Internal to src/mesh.
 #pragma once
 
 #include <bit>
@@ -28,14 +28,6 @@ public:
         for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
             if (slots_[s] == kNone) return slots_[s] = index;
             if (same(slots_[s])) return slots_[s];
-        }
-    }
-
-    /// The first index stored with hash `hash` for which same(index) holds, else kNone.
-    template <class Same>
-    std::uint32_t find(std::uint64_t hash, Same same) const {
-        for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
-            if (slots_[s] == kNone || same(slots_[s])) return slots_[s];
         }
     }
 

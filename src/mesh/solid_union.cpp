@@ -95,7 +95,6 @@ constexpr std::uint32_t kUnknown = std::numeric_limits<std::uint32_t>::max();
 std::uint32_t nextCorner(std::uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; }
 
 using detail::bitsOf;
-using detail::hashOfWords;
 using detail::PositionBits;
 
 // Per vertex: the index of its position among the distinct positions (bit-exact), numbered
@@ -111,7 +110,7 @@ std::vector<std::uint32_t> weldByPosition(const std::vector<Vec3f>& positions,
     for (std::uint32_t i = 0; i < positions.size(); ++i) {
         const PositionBits& b = bits[i];
         const std::uint32_t first =
-            table.findOrAdd(hashOfWords(b.data(), b.size()), i, [&](std::uint32_t j) {
+            table.findOrAdd(detail::PositionBitsHash{}(b), i, [&](std::uint32_t j) {
                 return bits[j][0] == b[0] && bits[j][1] == b[1] && bits[j][2] == b[2];
             });
         id[i] = first == i ? next++ : id[first];
