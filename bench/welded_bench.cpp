@@ -1,7 +1,7 @@
 // Welded mesher throughput (issue 9: ≥ 1 M triangles/s on one thread) on the synthetic trees of
 // mesh_bench.cpp at doubling sizes (16k … 1M edges), the tube mesher on the same trees for
-// comparison, and on the shipped L-system tree_3d at 5 … 8 derivations. Counters as
-// mesh_bench.cpp, plus the junction count. BM_WeldedUnion: welding plus the solid union
+// comparison, on the shipped L-system tree_3d at 5 … 8 derivations and on the dense ABOP plants.
+// Counters as mesh_bench.cpp, plus the junction count. BM_WeldedUnion: welding plus the solid union
 // (--union) on tree_3d and on the dense ABOP 1.24b, with the union's result counters.
 #include <benchmark/benchmark.h>
 
@@ -17,8 +17,7 @@ namespace {
 
 using ramus::BranchTree;
 
-void BM_WeldedMesh(benchmark::State& state, BranchTree (*makeTree)(std::int64_t)) {
-    const BranchTree tree = makeTree(state.range(0));
+void weldRepeatedly(benchmark::State& state, const BranchTree& tree) {
     ramus::Mesh mesh;
     ramus::WeldReport report;
     for (auto _ : state) {
@@ -29,6 +28,10 @@ void BM_WeldedMesh(benchmark::State& state, BranchTree (*makeTree)(std::int64_t)
     ramus::bench::reportMesh(state, tree, mesh);
     state.counters["junctions"] = static_cast<double>(report.junctions);
     state.counters["shrunk"] = static_cast<double>(report.refinedJunctions);
+}
+
+void BM_WeldedMesh(benchmark::State& state, BranchTree (*makeTree)(std::int64_t)) {
+    weldRepeatedly(state, makeTree(state.range(0)));
 }
 
 BENCHMARK_CAPTURE(BM_WeldedMesh, binary, ramus::bench::binaryTree)
@@ -54,6 +57,17 @@ BranchTree example(const char* name, std::int64_t derivations) {
 BranchTree tree3d(std::int64_t derivations) { return example("tree_3d", derivations); }
 
 BENCHMARK_CAPTURE(BM_WeldedMesh, tree_3d, tree3d)->DenseRange(5, 8)->Unit(benchmark::kMillisecond);
+
+// The dense ABOP plants at their own derivations: radii far above their internodes near the
+// base, so many junctions are crowded and shrunk (docs/welded.md, "Shrunk junctions").
+void BM_WeldedExample(benchmark::State& state, const char* name) {
+    weldRepeatedly(state, example(name, -1));
+}
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24a, "abop_1_24a")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24b, "abop_1_24b")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24c, "abop_1_24c")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_27, "abop_1_27")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_31a, "abop_1_31a")->Unit(benchmark::kMillisecond);
 
 // triangles/s counts the welded mesh's triangles (the union's input).
 void BM_WeldedUnion(benchmark::State& state, const char* name) {
