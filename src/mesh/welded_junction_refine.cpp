@@ -27,6 +27,14 @@
 #include "welded_builder.hpp"
 
 namespace ramus::detail {
+
+JunctionShape::Capsule::Point JunctionShape::Capsule::nearest(const Vec3& p) const {
+    const Vec3 ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return {p - a - t * ab, ra + t * (rb - ra)};
+}
+
 namespace {
 
 // A hull face is a web, and refined, when its centre or an edge's midpoint lies farther than
@@ -111,6 +119,45 @@ std::uint64_t positionHash(const Vec3f& p) {
         hashCombine(std::bit_cast<std::uint32_t>(p.x()), std::bit_cast<std::uint32_t>(p.y())),
         std::bit_cast<std::uint32_t>(p.z()));
 }
+
+// The signed distance to tapered capsules folded in one at a time, smoothed by the fillet.
+struct SmoothUnion {
+    double fillet;
+    double d = std::numeric_limits<double>::infinity();
+    double plain = std::numeric_limits<double>::infinity();  // the nearest surface's distance
+
+    // Folds in a capsule whose surface lies `di` away; returns the weight of its direction in
+    // the gradient (1 − h/2 where it is the nearer, h/2 where it is the farther).
+    double fold(double di) {
+        // Polynomial smooth minimum (Quilez): min(d, di) − fillet h²/4 with h = (fillet −
+        // |d − di|) / fillet, which is min(d, di) once they differ by `fillet`. Its slope in d
+        // is 1 − h/2 where d is the smaller, h/2 where it is the larger.
+        const double h = std::max(fillet - std::abs(d - di), 0.0) / fillet;
+        const double toNew = di < d ? 1.0 - 0.5 * h : 0.5 * h;
+        d = std::min(d, di) - 0.25 * h * h * fillet;
+        plain = std::min(plain, di);
+        return toNew;
+    }
+};
+
+// SmoothUnion at a point, with the gradient's direction.
+struct SmoothUnionAt {
+    const Vec3& p;
+    bool withGradient;
+    SmoothUnion sum;
+    Vec3 g = Vec3::Zero();
+
+    void add(const JunctionShape::Capsule& c) {
+        const JunctionShape::Capsule::Point q = c.nearest(p);
+        const double length = q.offset.norm();
+        const double toNew = sum.fold(length - q.radius);
+        if (withGradient && length > 0.0) g = (1.0 - toNew) * g + toNew * (q.offset / length);
+    }
+    double result(Vec3* gradient) const {
+        if (gradient != nullptr) *gradient = g;
+        return sum.d;
+    }
+};
 
 }  // namespace
 
@@ -200,12 +247,17 @@ public:
         for (std::size_t i = 0; i < added; ++i) {
             mesh_.positions[firstNew_ + i] = onHull_[i].cast<float>();
         }
+        findSeamCopies();
         target_.resize(added);
         targetNormal_.resize(added);
         for (std::size_t i = 0; i < added; ++i) {
-            target_[i] = restingPoint(onHull_[i], targetNormal_[i]);
+            if (owner_[i] == i) {
+                target_[i] = restingPoint(onHull_[i], targetNormal_[i]);
+            } else {  // a seam copy, at the same point as its owner
+                target_[i] = target_[owner_[i]];
+                targetNormal_[i] = targetNormal_[owner_[i]];
+            }
         }
-        findSeamCopies();
         share_.assign(added, 1.0);
         // The vertices move along rays from the centre, so the triangle whose cone holds a
         // sample stays the same.
@@ -239,6 +291,28 @@ public:
                 }
             }
             if (!halved) break;
+        }
+    }
+
+    // What a shrink leaves (the moves towards one centre), to go back to the best of several.
+    struct Shrunk {
+        Vec3 centre;
+        double centreDistance;
+        std::vector<Vec3> target, targetNormal;
+        std::vector<double> share;
+    };
+    Shrunk shrunk() const { return {centre_, centreDistance_, target_, targetNormal_, share_}; }
+    // The state of the shrink that left `s`, as a shrink towards its centre would leave it
+    // again (the moves do not depend on what was shrunk before).
+    void restore(Shrunk s) {
+        centre_ = s.centre;
+        centreDistance_ = s.centreDistance;
+        target_ = std::move(s.target);
+        targetNormal_ = std::move(s.targetNormal);
+        share_ = std::move(s.share);
+        for (std::size_t i = 0; i < onHull_.size(); ++i) {
+            mesh_.positions[firstNew_ + i] =
+                (onHull_[i] + share_[owner_[i]] * (target_[i] - onHull_[i])).cast<float>();
         }
     }
 
@@ -436,23 +510,40 @@ private:
         const Vec3 toCentre = centre_ - p;
         const double length = toCentre.norm();
         normal = Vec3::Zero();
-        orderFor(p, centre_);
-        double d = shape_.distance(p, order_) - iso;
-        if (!(length > 0.0) || d <= 0.0) return p;
+        if (!(length > 0.0)) return p;
         const Vec3 direction = toCentre / length;
+        orderFor(p, centre_);
+        // The ray stays outside until it comes within the fillet of a capsule (the smooth
+        // minimum lies at most a fillet below the nearest capsule's distance): sphere tracing
+        // starts there, a step short of it, instead of at the hull.
+        const double least = 0.05 * shape_.thinnest;
+        const double start = alongRay(p, direction, iso + shape_.fillet) - least;
+        double d = distanceAlong(0.0) - iso;
+        if (d <= 0.0) return p;
+        double outside = 0.0, dOut = d;
+        if (start >= length) return p;
+        if (start > 0.0) {
+            d = distanceAlong(start) - iso;
+            if (d <= 0.0) {
+                const Vec3 x = p + crossing(outside, dOut, start, d) * direction;
+                shape_.distance(x, order_, &normal);
+                if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
+                return x;
+            }
+            outside = start;
+            dOut = d;
+        }
         // Sphere tracing: no branch lies within 0.8 d of a point d outside them (the factor
         // allows for the taper), so the first crossing is not stepped over. Over-relaxed
         // (Keinert et al. 2014, "Enhanced sphere tracing"): steps of kRelaxation times that,
         // kept while the safe balls around the two ends cover the step (a ray at a slant to the
         // branches); where they do not, the step is taken again plainly and so are the rest.
         // 15 % fewer distance evaluations than plain steps on the synthetic monopodial tree.
-        const double least = 0.05 * shape_.thinnest;
-        double outside = 0.0, dOut = d;
         double relaxation = kRelaxation;
         while (outside < length) {
             const double step = std::max(relaxation * 0.8 * dOut, least);
             const double s = std::min(length, outside + step);
-            d = shape_.distance(p + s * direction, order_) - iso;
+            d = distanceAlong(s) - iso;
             if (relaxation > 1.0 && 0.8 * (dOut + std::abs(d)) < s - outside &&
                 step > std::max(0.8 * dOut, least)) {
                 relaxation = 1.0;
@@ -460,7 +551,7 @@ private:
             }
             if (d <= 0.0) {
                 // The ray's capsules hold every one that matters at any point of it.
-                const Vec3 x = p + crossing(p, direction, outside, dOut, s, d) * direction;
+                const Vec3 x = p + crossing(outside, dOut, s, d) * direction;
                 shape_.distance(x, order_, &normal);
                 if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
                 return x;
@@ -471,16 +562,15 @@ private:
         return p;
     }
 
-    // Where the surface (offset by the iso value) crosses the ray p + s·direction between
+    // Where the surface (offset by the iso value) crosses the ray of alongRay between
     // `outside` (value dOut > 0) and `inside` (dIn ≤ 0): regula falsi, Illinois variant.
-    double crossing(const Vec3& p, const Vec3& direction, double outside, double dOut,
-                    double inside, double dIn) const {
+    double crossing(double outside, double dOut, double inside, double dIn) const {
         const double iso = kSurfaceOffset * shape_.thinnest;
         const double tolerance = 1e-3 * shape_.thinnest;
         int side = 0;
         for (int k = 0; k < 32 && inside - outside > tolerance; ++k) {
             const double s = outside + (inside - outside) * dOut / (dOut - dIn);
-            const double d = shape_.distance(p + s * direction, order_) - iso;
+            const double d = distanceAlong(s) - iso;
             if (std::abs(d) < 1e-2 * tolerance) return s;
             if (d > 0.0) {
                 outside = s;
@@ -495,6 +585,70 @@ private:
             }
         }
         return inside;
+    }
+
+    // along_: the capsules of order_ seen from the ray p + s·u, each as a few coefficients in s,
+    // for the dozens of distance evaluations along one ray (distanceAlong). Returns a lower
+    // bound of the ray's first point within `reach` of a capsule's surface (infinity if none).
+    double alongRay(const Vec3& p, const Vec3& u, double reach) {
+        along_.clear();
+        const double u2 = u.squaredNorm();
+        double first = std::numeric_limits<double>::infinity();
+        for (const JunctionShape::Bound& bound : order_) {
+            const JunctionShape::Capsule& c = shape_.capsules[bound.capsule];
+            const Vec3 w = p - c.a, ab = c.b - c.a;
+            const double length2 = ab.squaredNorm();
+            const AlongRay& ray =
+                along_.emplace_back(w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab),
+                                    length2, length2 > 0.0 ? 1.0 / length2 : 0.0, c.ra,
+                                    c.rb - c.ra, bound.distance);
+            // Within reach of the capsule only within reach of its axis' line and of its
+            // bounding ball: the first point in both, ahead of p (none where the ball is out of
+            // reach).
+            if (bound.distance > reach) continue;
+            const double radius = std::max(c.ra, c.rb) + reach;
+            const Vec3 m = w - 0.5 * ab;  // from the axis' midpoint to p
+            const double ball = 0.5 * std::sqrt(length2) + radius;
+            auto [from, to] = below(u2, 2.0 * m.dot(u), m.squaredNorm() - ball * ball);
+            if (length2 > 0.0) {
+                const auto [lineFrom, lineTo] =
+                    below(ray.q2 - ray.e1 * ray.e1 * ray.inverse2,
+                          ray.q1 - 2.0 * ray.e0 * ray.e1 * ray.inverse2,
+                          ray.q0 - ray.e0 * ray.e0 * ray.inverse2 - radius * radius);
+                from = std::max(from, lineFrom);
+                to = std::min(to, lineTo);
+            }
+            if (from <= to && to >= 0.0) first = std::min(first, from);
+        }
+        return first;
+    }
+    // The interval of s where a s² + b s + c ≤ 0 (a ≥ 0), widened by rounding; empty (from >
+    // to) if there is none.
+    static std::pair<double, double> below(double a, double b, double c) {
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+        const double slack = 1e-9 * (std::abs(b) + std::sqrt(std::abs(a * c)));
+        if (a <= 1e-12 * std::abs(b) || a <= 0.0) {  // (nearly) linear: no bound but its sign
+            if (b > 0.0) return {-kInf, (slack - c) / b};
+            if (b < 0.0) return {(-c - slack) / b, kInf};
+            return c <= slack ? std::pair{-kInf, kInf} : std::pair{kInf, -kInf};
+        }
+        const double discriminant = b * b - 4.0 * a * c;
+        if (discriminant < -slack * slack) return {kInf, -kInf};
+        const double root = std::sqrt(std::max(discriminant, 0.0)) + slack;
+        return {(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)};
+    }
+    // shape_.distance(p + s·u, order_) for the ray of alongRay, up to rounding: the offset from
+    // the nearest axis point squared is |x − a|² − 2t (x − a)·(b − a) + t² |b − a|².
+    double distanceAlong(double s) const {
+        SmoothUnion sum{shape_.fillet};
+        for (const AlongRay& c : along_) {
+            if (c.bound >= sum.plain + sum.fillet) break;
+            const double e = c.e0 + c.e1 * s;
+            const double t = std::clamp(e * c.inverse2, 0.0, 1.0);
+            const double offset2 = c.q0 + s * (c.q1 + s * c.q2) - t * (2.0 * e - t * c.length2);
+            sum.fold(std::sqrt(std::max(offset2, 0.0)) - (c.ra + t * c.dr));
+        }
+        return sum.d;
     }
 
     // owner_[i]: the first new vertex at new vertex i's hull position (seam copies).
@@ -642,71 +796,38 @@ private:
     std::vector<double> share_;  // per owner: the fraction of its move made
     std::vector<std::uint32_t> grid_;
     std::vector<JunctionShape::Bound> order_;  // the capsules by distance from a ray
+    struct AlongRay {
+        double q0, q1, q2;         // |x − a|² = q0 + s (q1 + s q2)
+        double e0, e1;             // (x − a)·(b − a) = e0 + e1 s
+        double length2, inverse2;  // |b − a|² and its inverse (0 for a ball)
+        double ra, dr;             // the radius at a and its change to b
+        double bound;              // order_'s bound of the surface's distance from the ray
+    };
+    std::vector<AlongRay> along_;  // order_ along the ray of restingPoint
     std::vector<HullFace> hullFaces_;
     std::vector<Vec4> spheres_;  // per capsule: around its axis' midpoint, holding it
 };
 
-JunctionShape::Capsule::Point JunctionShape::Capsule::nearest(const Vec3& p) const {
-    const Vec3 ab = b - a;
-    const double length2 = ab.squaredNorm();
-    const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    return {p - a - t * ab, ra + t * (rb - ra)};
-}
-
-namespace {
-
-// The signed distance to tapered capsules folded in one at a time, smoothed by the fillet.
-struct SmoothUnion {
-    const Vec3& p;
-    double fillet;
-    bool withGradient;
-    double d = std::numeric_limits<double>::infinity();
-    double plain = std::numeric_limits<double>::infinity();  // the nearest surface's distance
-    Vec3 g = Vec3::Zero();
-
-    void add(const JunctionShape::Capsule& c) {
-        const JunctionShape::Capsule::Point q = c.nearest(p);
-        const double length = q.offset.norm();
-        const double di = length - q.radius;
-        // Polynomial smooth minimum (Quilez): min(d, di) − fillet h²/4 with h = (fillet −
-        // |d − di|) / fillet, which is min(d, di) once they differ by `fillet`. Its slope in d
-        // is 1 − h/2 where d is the smaller, h/2 where it is the larger.
-        const double h = std::max(fillet - std::abs(d - di), 0.0) / fillet;
-        if (withGradient && length > 0.0) {
-            const double toNew = di < d ? 1.0 - 0.5 * h : 0.5 * h;
-            g = (1.0 - toNew) * g + toNew * (q.offset / length);
-        }
-        d = std::min(d, di) - 0.25 * h * h * fillet;
-        plain = std::min(plain, di);
-    }
-    double result(Vec3* gradient) const {
-        if (gradient != nullptr) *gradient = g;
-        return d;
-    }
-};
-
-}  // namespace
-
 // Signed distance of `p` to the junction's branches (tapered capsules), smoothed by the
 // fillet: negative inside.
 double JunctionShape::distance(const Vec3& p, Vec3* gradient) const {
-    SmoothUnion sum{p, fillet, gradient != nullptr};
+    SmoothUnionAt sum{p, gradient != nullptr, {fillet}};
     for (const Capsule& c : capsules) sum.add(c);
     return sum.result(gradient);
 }
 
 double JunctionShape::plainDistance(const Vec3& p) const {
-    SmoothUnion sum{p, fillet, false};
+    SmoothUnionAt sum{p, false, {fillet}};
     for (const Capsule& c : capsules) sum.add(c);
-    return sum.plain;
+    return sum.sum.plain;
 }
 
 // A capsule whose surface lies at least a fillet beyond the nearest one's so far (d is at most
 // that) has h = 0: d and the gradient stay; so has every capsule after it in the order.
 double JunctionShape::distance(const Vec3& p, std::span<const Bound> order, Vec3* gradient) const {
-    SmoothUnion sum{p, fillet, gradient != nullptr};
+    SmoothUnionAt sum{p, gradient != nullptr, {fillet}};
     for (const Bound& bound : order) {
-        if (bound.distance >= sum.plain + fillet) break;
+        if (bound.distance >= sum.sum.plain + fillet) break;
         sum.add(capsules[bound.capsule]);
     }
     return sum.result(gradient);
@@ -838,7 +959,8 @@ void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
     }
     double least = refiner.excess();
     std::vector<Vec3> tried{first};
-    Vec3 best = first;
+    JunctionRefiner::Shrunk best = refiner.shrunk();
+    bool lastIsBest = true;
     for (const HullRing& h : hullRings_) {
         if (tried.size() == kMaxCentres) break;
         if (!h.hole() ||
@@ -850,12 +972,13 @@ void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
         tried.push_back(h.node);
         refiner.shrink(h.node, samples);
         const double excess = refiner.excess();
-        if (excess < least) {
+        lastIsBest = excess < least;
+        if (lastIsBest) {
             least = excess;
-            best = h.node;
+            best = refiner.shrunk();
         }
     }
-    if (best != tried.back()) refiner.shrink(best, samples);
+    if (!lastIsBest) refiner.restore(std::move(best));
 }
 
 // Returns whether, with `judgeWebs`, faces of the shrunk junction still lie more than
