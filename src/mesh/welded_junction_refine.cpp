@@ -598,10 +598,9 @@ private:
             const JunctionShape::Capsule& c = shape_.capsules[bound.capsule];
             const Vec3 w = p - c.a, ab = c.b - c.a;
             const double length2 = ab.squaredNorm();
-            const AlongRay& ray =
-                along_.emplace_back(w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab),
-                                    length2, length2 > 0.0 ? 1.0 / length2 : 0.0, c.ra,
-                                    c.rb - c.ra, bound.distance);
+            const AlongRay& ray = along_.emplace_back(
+                w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab), length2,
+                length2 > 0.0 ? 1.0 / length2 : 0.0, c.ra, c.rb - c.ra, bound.distance);
             // Within reach of the capsule only within reach of its axis' line and of its
             // bounding ball: the first point in both, ahead of p (none where the ball is out of
             // reach).
