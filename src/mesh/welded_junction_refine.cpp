@@ -517,45 +517,42 @@ private:
         // minimum lies at most a fillet below the nearest capsule's distance): sphere tracing
         // starts there, a step short of it, instead of at the hull.
         const double least = 0.05 * shape_.thinnest;
-        const double start = alongRay(p, direction, iso + shape_.fillet) - least;
-        double d = distanceAlong(0.0) - iso;
-        if (d <= 0.0) return p;
-        double outside = 0.0, dOut = d;
-        if (start >= length) return p;
+        const RayBounds bounds = alongRay(p, direction, iso + shape_.fillet);
+        const double start = bounds.reach - least;
+        auto hit = [&](double outside, double dOut, double inside, double dIn) {
+            const Vec3 x = p + crossing(outside, dOut, inside, dIn) * direction;
+            shape_.distance(x, order_, &normal);
+            if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
+            return x;
+        };
+        double outside = 0.0, dOut = distanceAlong(0.0) - iso;
+        if (dOut <= 0.0 || start >= length) return p;
         if (start > 0.0) {
-            d = distanceAlong(start) - iso;
-            if (d <= 0.0) {
-                const Vec3 x = p + crossing(outside, dOut, start, d) * direction;
-                shape_.distance(x, order_, &normal);
-                if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
-                return x;
-            }
+            const double d = distanceAlong(start) - iso;
+            if (d <= 0.0) return hit(outside, dOut, start, d);
             outside = start;
             dOut = d;
         }
-        // Sphere tracing: no branch lies within 0.8 d of a point d outside them (the factor
-        // allows for the taper), so the first crossing is not stepped over. Over-relaxed
-        // (Keinert et al. 2014, "Enhanced sphere tracing"): steps of kRelaxation times that,
-        // kept while the safe balls around the two ends cover the step (a ray at a slant to the
-        // branches); where they do not, the step is taken again plainly and so are the rest.
-        // 15 % fewer distance evaluations than plain steps on the synthetic monopodial tree.
+        // Sphere tracing: no branch lies within d / L of a point d outside them (L bounds the
+        // distance's slope: bounds.safe = 1 / L), so the first crossing is not stepped over.
+        // Over-relaxed (Keinert et al. 2014, "Enhanced sphere tracing"): steps of kRelaxation
+        // times that, kept while the safe balls around the two ends cover the step (a ray at a
+        // slant to the branches); where they do not, the step is taken again plainly and so are
+        // the rest. 15 % fewer distance evaluations than plain steps on the synthetic monopodial
+        // tree.
+        const double safe = bounds.safe;
         double relaxation = kRelaxation;
         while (outside < length) {
-            const double step = std::max(relaxation * 0.8 * dOut, least);
+            const double step = std::max(relaxation * safe * dOut, least);
             const double s = std::min(length, outside + step);
-            d = distanceAlong(s) - iso;
-            if (relaxation > 1.0 && 0.8 * (dOut + std::abs(d)) < s - outside &&
-                step > std::max(0.8 * dOut, least)) {
+            const double d = distanceAlong(s) - iso;
+            if (relaxation > 1.0 && safe * (dOut + std::abs(d)) < s - outside &&
+                step > std::max(safe * dOut, least)) {
                 relaxation = 1.0;
                 continue;
             }
-            if (d <= 0.0) {
-                // The ray's capsules hold every one that matters at any point of it.
-                const Vec3 x = p + crossing(outside, dOut, s, d) * direction;
-                shape_.distance(x, order_, &normal);
-                if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
-                return x;
-            }
+            // The ray's capsules hold every one that matters at any point of it.
+            if (d <= 0.0) return hit(outside, dOut, s, d);
             dOut = d;
             outside = s;
         }
@@ -587,13 +584,23 @@ private:
         return inside;
     }
 
+    struct RayBounds {
+        double reach;  // no capsule within reach before this distance along the ray
+        double safe;   // 1 / the largest slope of the distance along the ray
+    };
     // along_: the capsules of order_ seen from the ray p + s·u, each as a few coefficients in s,
     // for the dozens of distance evaluations along one ray (distanceAlong). Returns a lower
-    // bound of the ray's first point within `reach` of a capsule's surface (infinity if none).
-    double alongRay(const Vec3& p, const Vec3& u, double reach) {
+    // bound of the ray's first point within `reach` of a capsule's surface, and the inverse of
+    // the distance's steepest slope: a capsule's distance |x − axis point| − r(t) grows by
+    // √(1 + (Δr / |b − a|)²) per unit at most (its gradient is the unit offset plus the taper
+    // along the axis; balls and the smooth minimum, a blend of its terms' gradients, add no
+    // more). The dense ABOP plants have tapers of up to 1.6 near their bases (a factor 0.52),
+    // most branches below 0.05 (0.999).
+    RayBounds alongRay(const Vec3& p, const Vec3& u, double reach) {
         along_.clear();
         const double u2 = u.squaredNorm();
         double first = std::numeric_limits<double>::infinity();
+        double steepest = 0.0;
         for (const JunctionShape::Bound& bound : order_) {
             const JunctionShape::Capsule& c = shape_.capsules[bound.capsule];
             const Vec3 w = p - c.a, ab = c.b - c.a;
@@ -601,6 +608,7 @@ private:
             const AlongRay& ray = along_.emplace_back(
                 w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab), length2,
                 length2 > 0.0 ? 1.0 / length2 : 0.0, c.ra, c.rb - c.ra, bound.distance);
+            steepest = std::max(steepest, ray.dr * ray.dr * ray.inverse2);
             // Within reach of the capsule only within reach of its axis' line and of its
             // bounding ball: the first point in both, ahead of p (none where the ball is out of
             // reach).
@@ -619,7 +627,7 @@ private:
             }
             if (from <= to && to >= 0.0) first = std::min(first, from);
         }
-        return first;
+        return {first, 1.0 / std::sqrt(1.0 + steepest)};
     }
     // The interval of s where a s² + b s + c ≤ 0 (a ≥ 0), widened by rounding; empty (from >
     // to) if there is none.
