@@ -33,8 +33,13 @@ struct RingRecord {
 /// (welded_junction_refine.cpp).
 struct JunctionShape {
     struct Capsule {
+        Capsule(const Vec3& from, const Vec3& to, double radiusFrom, double radiusTo)
+            : a(from), b(to), ra(radiusFrom), rb(radiusTo), ab(to - from),
+              length2(ab.squaredNorm()) {}
         Vec3 a, b;
         double ra, rb;
+        Vec3 ab;         ///< b − a
+        double length2;  ///< |b − a|²
         struct Point {
             Vec3 offset;    ///< from the nearest axis point to the query point
             double radius;  ///< the capsule's radius there

@@ -29,8 +29,6 @@
 namespace ramus::detail {
 
 JunctionShape::Capsule::Point JunctionShape::Capsule::nearest(const Vec3& p) const {
-    const Vec3 ab = b - a;
-    const double length2 = ab.squaredNorm();
     const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
     return {p - a - t * ab, ra + t * (rb - ra)};
 }
@@ -240,7 +238,7 @@ public:
         for (const JunctionShape::Capsule& c : shape_.capsules) {
             const Vec3 middle = 0.5 * (c.a + c.b);
             spheres_.emplace_back(middle.x(), middle.y(), middle.z(),
-                                  0.5 * (c.b - c.a).norm() + std::max(c.ra, c.rb));
+                                  0.5 * std::sqrt(c.length2) + std::max(c.ra, c.rb));
         }
         const std::size_t added = onHull_.size();
         // From the flat subdivision (a shrink towards another centre may have moved them).
@@ -603,7 +601,8 @@ private:
         double steepest = 0.0;
         for (const JunctionShape::Bound& bound : order_) {
             const JunctionShape::Capsule& c = shape_.capsules[bound.capsule];
-            const Vec3 w = p - c.a, ab = c.b - c.a;
+            const Vec3 w = p - c.a;
+            const Vec3& ab = c.ab;
             const double length2 = ab.squaredNorm();
             const AlongRay& ray = along_.emplace_back(
                 w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab), length2,
@@ -1017,11 +1016,11 @@ bool WeldBuilder::refineJunction(std::size_t firstIndex, bool judgeWebs) {
     Vec3 rayCentre = centre;
     double nearest = std::numeric_limits<double>::infinity();
     for (const JunctionShape::Capsule& capsule : shape_.capsules) {
-        const double length = (capsule.b - capsule.a).norm();
+        const double length = std::sqrt(capsule.length2);
         const double spacing = 0.5 * std::min(capsule.ra, capsule.rb);
         const int pieces = std::clamp(static_cast<int>(std::ceil(length / spacing)), 1, 16);
         for (int k = 0; k <= pieces; ++k) {
-            const Vec3 q = capsule.a + (static_cast<double>(k) / pieces) * (capsule.b - capsule.a);
+            const Vec3 q = capsule.a + (static_cast<double>(k) / pieces) * capsule.ab;
             const double depth = depthInHull(q);
             if (depth > 0.0) samples.push_back(q);
             if (!centreInside && depth >= kCentreDepth * shape_.thinnest &&
