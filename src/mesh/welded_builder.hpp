@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "on_cores.hpp"
 #include "ramus/mesh.hpp"
 #include "ramus/tree_wind.hpp"
 #include "ramus/welded_mesher.hpp"
@@ -34,7 +35,11 @@ struct RingRecord {
 struct JunctionShape {
     struct Capsule {
         Capsule(const Vec3& from, const Vec3& to, double radiusFrom, double radiusTo)
-            : a(from), b(to), ra(radiusFrom), rb(radiusTo), ab(to - from),
+            : a(from),
+              b(to),
+              ra(radiusFrom),
+              rb(radiusTo),
+              ab(to - from),
               length2(ab.squaredNorm()) {}
         Vec3 a, b;
         double ra, rb;
@@ -186,6 +191,7 @@ private:
 
     JunctionShape shape_;
     std::unique_ptr<SegmentGrid> segments_;  // built on the first junction shrunk
+    CoreTeam team_;                          // shares a shrunk junction's rays
 };
 
 }  // namespace ramus::detail

@@ -23,6 +23,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "on_cores.hpp"
 #include "ramus/rng.hpp"
 #include "welded_builder.hpp"
 
@@ -164,8 +165,8 @@ struct SmoothUnionAt {
 class JunctionRefiner {
 public:
     JunctionRefiner(Mesh& mesh, WindAttributes* wind, const JunctionShape& shape,
-                    std::size_t firstIndex)
-        : mesh_(mesh), wind_(wind), shape_(shape), first_(firstIndex) {}
+                    std::size_t firstIndex, CoreTeam& team)
+        : mesh_(mesh), wind_(wind), shape_(shape), first_(firstIndex), team_(team) {}
 
     // Marks the edges to split: those of faces far outside the branches (webs), but not the
     // arms' ring edges (`whole(a, b)`), which the tubes share. Returns false if there is none.
@@ -248,10 +249,14 @@ public:
         findSeamCopies();
         target_.resize(added);
         targetNormal_.resize(added);
+        // The rays are independent: on the machine's cores, each with scratch space of its own.
+        rays_.resize(std::max<std::size_t>(workersFor(added), 1));
+        team_.forEach(added, [&](std::size_t i, std::size_t worker) {
+            if (owner_[i] == i)
+                target_[i] = restingPoint(onHull_[i], targetNormal_[i], rays_[worker]);
+        });
         for (std::size_t i = 0; i < added; ++i) {
-            if (owner_[i] == i) {
-                target_[i] = restingPoint(onHull_[i], targetNormal_[i]);
-            } else {  // a seam copy, at the same point as its owner
+            if (owner_[i] != i) {  // a seam copy, at the same point as its owner
                 target_[i] = target_[owner_[i]];
                 targetNormal_[i] = targetNormal_[owner_[i]];
             }
@@ -321,8 +326,8 @@ public:
             Vec3 gradient = targetNormal_[owner_[i]];
             if (share_[owner_[i]] != 1.0 || gradient == Vec3::Zero()) {
                 const Vec3 p = position(firstNew_ + static_cast<std::uint32_t>(i));
-                orderFor(p, p);
-                shape_.distance(p, order_, &gradient);
+                orderFor(p, p, rays_[0]);
+                shape_.distance(p, rays_[0].order, &gradient);
                 if (!(gradient.norm() > 1e-6)) gradient = p - centre_;
             }
             mesh_.normals[firstNew_ + i] = gradient.normalized().cast<float>();
@@ -363,6 +368,18 @@ public:
     }
 
 private:
+    // Scratch space of one ray (one per thread).
+    struct Ray {
+        std::vector<JunctionShape::Bound> order;  // the capsules by distance from the ray
+        struct Along {
+            double q0, q1, q2;         // |x − a|² = q0 + s (q1 + s q2)
+            double e0, e1;             // (x − a)·(b − a) = e0 + e1 s
+            double length2, inverse2;  // |b − a|² and its inverse (0 for a ball)
+            double ra, dr;             // the radius at a and its change to b
+            double bound;              // order's bound of the surface's distance from the ray
+        };
+        std::vector<Along> along;  // order along the ray of restingPoint
+    };
     static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
     static std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
@@ -503,30 +520,30 @@ private:
     // Along the ray from hull point p to the centre, the first point inside the branches'
     // surface (sphere tracing, then regula falsi), and the surface's gradient there; p itself
     // and a zero gradient if the ray meets none before the centre.
-    Vec3 restingPoint(const Vec3& p, Vec3& normal) {
+    Vec3 restingPoint(const Vec3& p, Vec3& normal, Ray& ray) const {
         const double iso = kSurfaceOffset * shape_.thinnest;
         const Vec3 toCentre = centre_ - p;
         const double length = toCentre.norm();
         normal = Vec3::Zero();
         if (!(length > 0.0)) return p;
         const Vec3 direction = toCentre / length;
-        orderFor(p, centre_);
+        orderFor(p, centre_, ray);
         // The ray stays outside until it comes within the fillet of a capsule (the smooth
         // minimum lies at most a fillet below the nearest capsule's distance): sphere tracing
         // starts there, a step short of it, instead of at the hull.
         const double least = 0.05 * shape_.thinnest;
-        const RayBounds bounds = alongRay(p, direction, iso + shape_.fillet);
+        const RayBounds bounds = alongRay(p, direction, iso + shape_.fillet, ray);
         const double start = bounds.reach - least;
         auto hit = [&](double outside, double dOut, double inside, double dIn) {
-            const Vec3 x = p + crossing(outside, dOut, inside, dIn) * direction;
-            shape_.distance(x, order_, &normal);
+            const Vec3 x = p + crossing(outside, dOut, inside, dIn, ray) * direction;
+            shape_.distance(x, ray.order, &normal);
             if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
             return x;
         };
-        double outside = 0.0, dOut = distanceAlong(0.0) - iso;
+        double outside = 0.0, dOut = distanceAlong(0.0, ray) - iso;
         if (dOut <= 0.0 || start >= length) return p;
         if (start > 0.0) {
-            const double d = distanceAlong(start) - iso;
+            const double d = distanceAlong(start, ray) - iso;
             if (d <= 0.0) return hit(outside, dOut, start, d);
             outside = start;
             dOut = d;
@@ -543,7 +560,7 @@ private:
         while (outside < length) {
             const double step = std::max(relaxation * safe * dOut, least);
             const double s = std::min(length, outside + step);
-            const double d = distanceAlong(s) - iso;
+            const double d = distanceAlong(s, ray) - iso;
             if (relaxation > 1.0 && safe * (dOut + std::abs(d)) < s - outside &&
                 step > std::max(safe * dOut, least)) {
                 relaxation = 1.0;
@@ -559,13 +576,13 @@ private:
 
     // Where the surface (offset by the iso value) crosses the ray of alongRay between
     // `outside` (value dOut > 0) and `inside` (dIn ≤ 0): regula falsi, Illinois variant.
-    double crossing(double outside, double dOut, double inside, double dIn) const {
+    double crossing(double outside, double dOut, double inside, double dIn, const Ray& ray) const {
         const double iso = kSurfaceOffset * shape_.thinnest;
         const double tolerance = 1e-3 * shape_.thinnest;
         int side = 0;
         for (int k = 0; k < 32 && inside - outside > tolerance; ++k) {
             const double s = outside + (inside - outside) * dOut / (dOut - dIn);
-            const double d = distanceAlong(s) - iso;
+            const double d = distanceAlong(s, ray) - iso;
             if (std::abs(d) < 1e-2 * tolerance) return s;
             if (d > 0.0) {
                 outside = s;
@@ -586,7 +603,8 @@ private:
         double reach;  // no capsule within reach before this distance along the ray
         double safe;   // 1 / the largest slope of the distance along the ray
     };
-    // along_: the capsules of order_ seen from the ray p + s·u, each as a few coefficients in s,
+    // ray.along: the capsules of ray.order seen from the ray p + s·u, each as a few coefficients
+    // in s,
     // for the dozens of distance evaluations along one ray (distanceAlong). Returns a lower
     // bound of the ray's first point within `reach` of a capsule's surface, and the inverse of
     // the distance's steepest slope: a capsule's distance |x − axis point| − r(t) grows by
@@ -594,20 +612,20 @@ private:
     // along the axis; balls and the smooth minimum, a blend of its terms' gradients, add no
     // more). The dense ABOP plants have tapers of up to 1.6 near their bases (a factor 0.52),
     // most branches below 0.05 (0.999).
-    RayBounds alongRay(const Vec3& p, const Vec3& u, double reach) {
-        along_.clear();
+    RayBounds alongRay(const Vec3& p, const Vec3& u, double reach, Ray& ray) const {
+        ray.along.clear();
         const double u2 = u.squaredNorm();
         double first = std::numeric_limits<double>::infinity();
         double steepest = 0.0;
-        for (const JunctionShape::Bound& bound : order_) {
+        for (const JunctionShape::Bound& bound : ray.order) {
             const JunctionShape::Capsule& c = shape_.capsules[bound.capsule];
             const Vec3 w = p - c.a;
             const Vec3& ab = c.ab;
             const double length2 = ab.squaredNorm();
-            const AlongRay& ray = along_.emplace_back(
+            const Ray::Along& along = ray.along.emplace_back(
                 w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab), length2,
                 length2 > 0.0 ? 1.0 / length2 : 0.0, c.ra, c.rb - c.ra, bound.distance);
-            steepest = std::max(steepest, ray.dr * ray.dr * ray.inverse2);
+            steepest = std::max(steepest, along.dr * along.dr * along.inverse2);
             // Within reach of the capsule only within reach of its axis' line and of its
             // bounding ball: the first point in both, ahead of p (none where the ball is out of
             // reach).
@@ -618,9 +636,9 @@ private:
             auto [from, to] = below(u2, 2.0 * m.dot(u), m.squaredNorm() - ball * ball);
             if (length2 > 0.0) {
                 const auto [lineFrom, lineTo] =
-                    below(ray.q2 - ray.e1 * ray.e1 * ray.inverse2,
-                          ray.q1 - 2.0 * ray.e0 * ray.e1 * ray.inverse2,
-                          ray.q0 - ray.e0 * ray.e0 * ray.inverse2 - radius * radius);
+                    below(along.q2 - along.e1 * along.e1 * along.inverse2,
+                          along.q1 - 2.0 * along.e0 * along.e1 * along.inverse2,
+                          along.q0 - along.e0 * along.e0 * along.inverse2 - radius * radius);
                 from = std::max(from, lineFrom);
                 to = std::min(to, lineTo);
             }
@@ -643,11 +661,11 @@ private:
         const double root = std::sqrt(std::max(discriminant, 0.0)) + slack;
         return {(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)};
     }
-    // shape_.distance(p + s·u, order_) for the ray of alongRay, up to rounding: the offset from
+    // shape_.distance(p + s·u, ray.order) for the ray of alongRay, up to rounding: the offset from
     // the nearest axis point squared is |x − a|² − 2t (x − a)·(b − a) + t² |b − a|².
-    double distanceAlong(double s) const {
+    double distanceAlong(double s, const Ray& ray) const {
         SmoothUnion sum{shape_.fillet};
-        for (const AlongRay& c : along_) {
+        for (const Ray::Along& c : ray.along) {
             if (c.bound >= sum.plain + sum.fillet) break;
             const double e = c.e0 + c.e1 * s;
             const double t = std::clamp(e * c.inverse2, 0.0, 1.0);
@@ -753,17 +771,18 @@ private:
         }
         return any;
     }
-    // order_: the capsules that can matter to the distance at points of the segment [a, b],
+    // ray.order: the capsules that can matter to the distance at points of the segment [a, b],
     // each with a bound (the distance from the segment to its bounding sphere, below the
     // distance to its surface from any point of the segment), nearest first. From any point x
     // of the segment the capsule surface nearest the centre lies at most centreDistance_ +
     // |x − centre| away, and capsules bound a fillet beyond that change nothing.
-    void orderFor(const Vec3& a, const Vec3& b) {
+    void orderFor(const Vec3& a, const Vec3& b, Ray& ray) const {
         const double farthest = std::max((a - centre_).norm(), (b - centre_).norm());
         const double beyond = centreDistance_ + farthest + shape_.fillet;
         const Vec3 ab = b - a;
         const double length2 = ab.squaredNorm();
-        order_.clear();
+        std::vector<JunctionShape::Bound>& order = ray.order;
+        order.clear();
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
             const Vec3 middle = spheres_[i].head<3>();
             const double reach = beyond + spheres_[i].w();
@@ -771,9 +790,9 @@ private:
                 length2 > 0.0 ? std::clamp((middle - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
             const double apart2 = (middle - a - t * ab).squaredNorm();
             if (reach <= 0.0 || apart2 >= reach * reach) continue;
-            order_.push_back({std::sqrt(apart2) - spheres_[i].w(), static_cast<std::uint32_t>(i)});
+            order.push_back({std::sqrt(apart2) - spheres_[i].w(), static_cast<std::uint32_t>(i)});
         }
-        std::sort(order_.begin(), order_.end());
+        std::sort(order.begin(), order.end());
     }
 
     struct HullFace {
@@ -801,15 +820,8 @@ private:
     std::vector<std::uint32_t> owner_;
     std::vector<double> share_;  // per owner: the fraction of its move made
     std::vector<std::uint32_t> grid_;
-    std::vector<JunctionShape::Bound> order_;  // the capsules by distance from a ray
-    struct AlongRay {
-        double q0, q1, q2;         // |x − a|² = q0 + s (q1 + s q2)
-        double e0, e1;             // (x − a)·(b − a) = e0 + e1 s
-        double length2, inverse2;  // |b − a|² and its inverse (0 for a ball)
-        double ra, dr;             // the radius at a and its change to b
-        double bound;              // order_'s bound of the surface's distance from the ray
-    };
-    std::vector<AlongRay> along_;  // order_ along the ray of restingPoint
+    CoreTeam& team_;
+    std::vector<Ray> rays_ = std::vector<Ray>(1);  // per worker thread
     std::vector<HullFace> hullFaces_;
     std::vector<Vec4> spheres_;  // per capsule: around its axis' midpoint, holding it
 };
@@ -878,7 +890,7 @@ bool WeldBuilder::hullWebbed(std::size_t firstIndex) {
     Vec3 centre;
     double reach = 0.0;
     if (!gatherOwnShape(firstIndex, centre, reach)) return false;
-    return JunctionRefiner(mesh_, nullptr, shape_, firstIndex).websLeft(kUnionWebLimit);
+    return JunctionRefiner(mesh_, nullptr, shape_, firstIndex, team_).websLeft(kUnionWebLimit);
 }
 
 // The branches within reach of the junction's hull (centre `centre`, radius `reach`): its arms
@@ -1000,7 +1012,7 @@ bool WeldBuilder::refineJunction(std::size_t firstIndex, bool judgeWebs) {
     // have none, and this is all they cost); the shrinking then takes every branch in reach.
     if (!gatherOwnShape(firstIndex, centre, reach)) return false;
     JunctionRefiner refiner(mesh_, params_.tube.windAttributes ? &windOut_ : nullptr, shape_,
-                            firstIndex);
+                            firstIndex, team_);
     if (!refiner.markWebs([&](std::uint32_t a, std::uint32_t b) { return onArmRingEdge(a, b); }) ||
         !gatherJunctionShape(centre, reach)) {
         return false;
