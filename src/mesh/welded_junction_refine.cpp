@@ -350,20 +350,24 @@ public:
     // How far the junction's faces stay outside the branches' surface: the distance of each
     // face's centre beyond it times the face's area, summed; `halvedOnly`: over the faces with
     // a corner whose move was halved alone.
-    double excess(bool halvedOnly = false) const {
+    double excess(bool halvedOnly = false) {
         const double iso = kSurfaceOffset * shape_.thinnest;
-        double sum = 0.0;
-        for (std::size_t f = first_; f < mesh_.indices.size(); f += 3) {
-            const std::array<std::uint32_t, 3> v = face(f);
+        const std::size_t faces = (mesh_.indices.size() - first_) / 3;
+        excess_.resize(faces);
+        team_.forEach(faces, [&](std::size_t k, std::size_t) {
+            excess_[k] = 0.0;
+            const std::array<std::uint32_t, 3> v = face(first_ + 3 * k);
             if (halvedOnly && std::none_of(v.begin(), v.end(), [&](std::uint32_t u) {
                     return u >= firstNew_ && share_[owner_[u - firstNew_]] < 1.0;
                 })) {
-                continue;
+                return;
             }
             const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
             const double out = shape_.distance((a + b + c) / 3.0) - iso;
-            if (out > 0.0) sum += out * 0.5 * (b - a).cross(c - a).norm();
-        }
+            if (out > 0.0) excess_[k] = out * 0.5 * (b - a).cross(c - a).norm();
+        });
+        double sum = 0.0;  // in face order, whatever the threads
+        for (const double e : excess_) sum += e;
         return sum;
     }
 
@@ -821,6 +825,7 @@ private:
     std::vector<double> share_;  // per owner: the fraction of its move made
     std::vector<std::uint32_t> grid_;
     CoreTeam& team_;
+    std::vector<double> excess_;  // per face, for excess()
     std::vector<Ray> rays_ = std::vector<Ray>(1);  // per worker thread
     std::vector<HullFace> hullFaces_;
     std::vector<Vec4> spheres_;  // per capsule: around its axis' midpoint, holding it
