@@ -532,34 +532,17 @@ private:
         if (!(length > 0.0)) return p;
         const Vec3 direction = toCentre / length;
         orderFor(p, centre_, ray);
-        // The ray stays outside until it comes within the fillet of a capsule (the smooth
-        // minimum lies at most a fillet below the nearest capsule's distance): sphere tracing
-        // starts there, a step short of it, instead of at the hull.
-        const double least = 0.05 * shape_.thinnest;
-        const RayBounds bounds = alongRay(p, direction, iso + shape_.fillet, ray);
-        const double start = bounds.reach - least;
-        auto hit = [&](double outside, double dOut, double inside, double dIn) {
-            const Vec3 x = p + crossing(outside, dOut, inside, dIn, ray) * direction;
-            shape_.distance(x, ray.order, &normal);
-            if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
-            return x;
-        };
+        const double safe = alongRay(p, direction, ray);
         double outside = 0.0, dOut = distanceAlong(0.0, ray) - iso;
-        if (dOut <= 0.0 || start >= length) return p;
-        if (start > 0.0) {
-            const double d = distanceAlong(start, ray) - iso;
-            if (d <= 0.0) return hit(outside, dOut, start, d);
-            outside = start;
-            dOut = d;
-        }
+        if (dOut <= 0.0) return p;
         // Sphere tracing: no branch lies within d / L of a point d outside them (L bounds the
-        // distance's slope: bounds.safe = 1 / L), so the first crossing is not stepped over.
+        // distance's slope: safe = 1 / L), so the first crossing is not stepped over.
         // Over-relaxed (Keinert et al. 2014, "Enhanced sphere tracing"): steps of kRelaxation
         // times that, kept while the safe balls around the two ends cover the step (a ray at a
         // slant to the branches); where they do not, the step is taken again plainly and so are
         // the rest. 15 % fewer distance evaluations than plain steps on the synthetic monopodial
         // tree.
-        const double safe = bounds.safe;
+        const double least = 0.05 * shape_.thinnest;
         double relaxation = kRelaxation;
         while (outside < length) {
             const double step = std::max(relaxation * safe * dOut, least);
@@ -570,8 +553,13 @@ private:
                 relaxation = 1.0;
                 continue;
             }
-            // The ray's capsules hold every one that matters at any point of it.
-            if (d <= 0.0) return hit(outside, dOut, s, d);
+            if (d <= 0.0) {
+                // The ray's capsules hold every one that matters at any point of it.
+                const Vec3 x = p + crossing(outside, dOut, s, d, ray) * direction;
+                shape_.distance(x, ray.order, &normal);
+                if (!(normal.norm() > 1e-6)) normal = Vec3::Zero();
+                return x;
+            }
             dOut = d;
             outside = s;
         }
@@ -603,67 +591,28 @@ private:
         return inside;
     }
 
-    struct RayBounds {
-        double reach;  // no capsule within reach before this distance along the ray
-        double safe;   // 1 / the largest slope of the distance along the ray
-    };
     // ray.along: the capsules of ray.order seen from the ray p + s·u, each as a few coefficients
-    // in s,
-    // for the dozens of distance evaluations along one ray (distanceAlong). Returns a lower
-    // bound of the ray's first point within `reach` of a capsule's surface, and the inverse of
-    // the distance's steepest slope: a capsule's distance |x − axis point| − r(t) grows by
-    // √(1 + (Δr / |b − a|)²) per unit at most (its gradient is the unit offset plus the taper
-    // along the axis; balls and the smooth minimum, a blend of its terms' gradients, add no
-    // more). The dense ABOP plants have tapers of up to 1.6 near their bases (a factor 0.52),
+    // in s, for the dozens of distance evaluations along one ray (distanceAlong). Returns the
+    // inverse of the distance's steepest slope along the ray: a capsule's distance |x − axis point|
+    // − r(t) grows by √(1 + (Δr / |b − a|)²) per unit at most (its gradient is the unit offset plus
+    // the taper along the axis; balls and the smooth minimum, a blend of its terms' gradients, add
+    // no more). The dense ABOP plants have tapers of up to 1.6 near their bases (a factor 0.52),
     // most branches below 0.05 (0.999).
-    RayBounds alongRay(const Vec3& p, const Vec3& u, double reach, Ray& ray) const {
+    double alongRay(const Vec3& p, const Vec3& u, Ray& ray) const {
         ray.along.clear();
         const double u2 = u.squaredNorm();
-        double first = std::numeric_limits<double>::infinity();
         double steepest = 0.0;
         for (const JunctionShape::Bound& bound : ray.order) {
             const JunctionShape::Capsule& c = shape_.capsules[bound.capsule];
             const Vec3 w = p - c.a;
             const Vec3& ab = c.ab;
-            const double length2 = ab.squaredNorm();
+            const double length2 = c.length2;
             const Ray::Along& along = ray.along.emplace_back(
                 w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab), length2,
                 length2 > 0.0 ? 1.0 / length2 : 0.0, c.ra, c.rb - c.ra, bound.distance);
             steepest = std::max(steepest, along.dr * along.dr * along.inverse2);
-            // Within reach of the capsule only within reach of its axis' line and of its
-            // bounding ball: the first point in both, ahead of p (none where the ball is out of
-            // reach).
-            if (bound.distance > reach) continue;
-            const double radius = std::max(c.ra, c.rb) + reach;
-            const Vec3 m = w - 0.5 * ab;  // from the axis' midpoint to p
-            const double ball = 0.5 * std::sqrt(length2) + radius;
-            auto [from, to] = below(u2, 2.0 * m.dot(u), m.squaredNorm() - ball * ball);
-            if (length2 > 0.0) {
-                const auto [lineFrom, lineTo] =
-                    below(along.q2 - along.e1 * along.e1 * along.inverse2,
-                          along.q1 - 2.0 * along.e0 * along.e1 * along.inverse2,
-                          along.q0 - along.e0 * along.e0 * along.inverse2 - radius * radius);
-                from = std::max(from, lineFrom);
-                to = std::min(to, lineTo);
-            }
-            if (from <= to && to >= 0.0) first = std::min(first, from);
         }
-        return {first, 1.0 / std::sqrt(1.0 + steepest)};
-    }
-    // The interval of s where a s² + b s + c ≤ 0 (a ≥ 0), widened by rounding; empty (from >
-    // to) if there is none.
-    static std::pair<double, double> below(double a, double b, double c) {
-        constexpr double kInf = std::numeric_limits<double>::infinity();
-        const double slack = 1e-9 * (std::abs(b) + std::sqrt(std::abs(a * c)));
-        if (a <= 1e-12 * std::abs(b) || a <= 0.0) {  // (nearly) linear: no bound but its sign
-            if (b > 0.0) return {-kInf, (slack - c) / b};
-            if (b < 0.0) return {(-c - slack) / b, kInf};
-            return c <= slack ? std::pair{-kInf, kInf} : std::pair{kInf, -kInf};
-        }
-        const double discriminant = b * b - 4.0 * a * c;
-        if (discriminant < -slack * slack) return {kInf, -kInf};
-        const double root = std::sqrt(std::max(discriminant, 0.0)) + slack;
-        return {(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)};
+        return 1.0 / std::sqrt(1.0 + steepest);
     }
     // shape_.distance(p + s·u, ray.order) for the ray of alongRay, up to rounding: the offset from
     // the nearest axis point squared is |x − a|² − 2t (x − a)·(b − a) + t² |b − a|².
@@ -825,7 +774,7 @@ private:
     std::vector<double> share_;  // per owner: the fraction of its move made
     std::vector<std::uint32_t> grid_;
     CoreTeam& team_;
-    std::vector<double> excess_;  // per face, for excess()
+    std::vector<double> excess_;                   // per face, for excess()
     std::vector<Ray> rays_ = std::vector<Ray>(1);  // per worker thread
     std::vector<HullFace> hullFaces_;
     std::vector<Vec4> spheres_;  // per capsule: around its axis' midpoint, holding it
