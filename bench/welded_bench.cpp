@@ -37,11 +37,13 @@ void BM_WeldedMesh(benchmark::State& state, BranchTree (*makeTree)(std::int64_t)
 BENCHMARK_CAPTURE(BM_WeldedMesh, binary, ramus::bench::binaryTree)
     ->RangeMultiplier(2)
     ->Range(1 << 14, 1 << 20)
-    ->Unit(benchmark::kMillisecond);
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_WeldedMesh, monopodial, ramus::bench::monopodialTree)
     ->RangeMultiplier(2)
     ->Range(1 << 14, 1 << 20)
-    ->Unit(benchmark::kMillisecond);
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // A shipped L-system example; derivations < 0: the file's own.
 BranchTree example(const char* name, std::int64_t derivations) {
@@ -56,18 +58,38 @@ BranchTree example(const char* name, std::int64_t derivations) {
 
 BranchTree tree3d(std::int64_t derivations) { return example("tree_3d", derivations); }
 
-BENCHMARK_CAPTURE(BM_WeldedMesh, tree_3d, tree3d)->DenseRange(5, 8)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WeldedMesh, tree_3d, tree3d)
+    ->DenseRange(5, 8)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
-// The dense ABOP plants at their own derivations: radii far above their internodes near the
-// base, so many junctions are crowded and shrunk (docs/welded.md, "Shrunk junctions").
+// The slowest ABOP plants to weld, at their own derivations: radii far above their internodes
+// near the base (1.24a–c, 1.27, 1.31a) or many branches at small angles (2.8a, 2.8d), so many
+// junctions are shrunk (docs/welded.md, "Shrunk junctions").
 void BM_WeldedExample(benchmark::State& state, const char* name) {
     weldRepeatedly(state, example(name, -1));
 }
-BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24a, "abop_1_24a")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24b, "abop_1_24b")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24c, "abop_1_24c")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_27, "abop_1_27")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_31a, "abop_1_31a")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24a, "abop_1_24a")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24b, "abop_1_24b")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_24c, "abop_1_24c")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_27, "abop_1_27")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_1_31a, "abop_1_31a")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_2_8a, "abop_2_8a")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_WeldedExample, abop_2_8d, "abop_2_8d")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // triangles/s counts the welded mesh's triangles (the union's input).
 void BM_WeldedUnion(benchmark::State& state, const char* name) {
@@ -93,7 +115,11 @@ void BM_WeldedUnion(benchmark::State& state, const char* name) {
 
 BENCHMARK_CAPTURE(BM_WeldedUnion, tree_3d, "tree_3d")
     ->DenseRange(5, 8)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WeldedUnion, abop_1_24b, "abop_1_24b")->Arg(-1)->Unit(benchmark::kMillisecond);
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_WeldedUnion, abop_1_24b, "abop_1_24b")
+    ->Arg(-1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
