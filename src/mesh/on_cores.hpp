@@ -14,18 +14,20 @@
 
 namespace ramus::detail {
 
-/// How many threads forEachOnCores runs n tasks on: up to as many as the machine has cores, at
+/// How many threads n tasks run on, given the machine's `cores`: up to as many as it has, at
 /// most 4, and one per 64 tasks.
-inline std::size_t workersFor(std::size_t n) {
+inline std::size_t workersFor(std::size_t n, std::size_t cores) {
     constexpr std::size_t kBlock = 64;
-    return std::min<std::size_t>(
-        {std::max(1u, std::thread::hardware_concurrency()), 4, n / kBlock + 1});
+    return std::min<std::size_t>({std::max<std::size_t>(1, cores), 4, n / kBlock + 1});
 }
 
-/// Calls task(i) for every i < n, on workersFor(n) threads, each thread taking every k-th block
-/// of 64 consecutive i (blocks, so that threads do not write to the same cache line): for
-/// independent tasks whose results go to slot i, so the result does not depend on the threads.
-/// A task taking two arguments also gets its thread's number w < workersFor(n), for scratch
+/// The machine's cores (a system call: glibc reads /sys each time).
+inline std::size_t machineCores() { return std::thread::hardware_concurrency(); }
+
+/// Calls task(i) for every i < n, on workersFor(n, machineCores()) threads, each thread taking
+/// every k-th block of 64 consecutive i (blocks, so that threads do not write to the same cache
+/// line): for independent tasks whose results go to slot i, so the result does not depend on the
+/// threads. A task taking two arguments also gets its thread's number w below that, for scratch
 /// space of its own. The solid union's patch and piece votes took 10–20 % of its time on one
 /// core (ABOP 1.24b: 1.4 s an attempt); the shrunk junctions' rays most of the welding time of
 /// the dense ABOP plants.
@@ -33,7 +35,7 @@ inline std::size_t workersFor(std::size_t n) {
 template <class Task>
 void forEachOnCores(std::size_t n, const Task& task) {
     constexpr std::size_t kBlock = 64;
-    const std::size_t threads = workersFor(n);
+    const std::size_t threads = workersFor(n, machineCores());
     std::vector<std::exception_ptr> failures(threads);
     auto share = [&](std::size_t w) {
         try {
@@ -65,7 +67,7 @@ void forEachOnCores(std::size_t n, const Task& task) {
 /// share and wait between batches; forEach gives the same results as forEachOnCores.
 class CoreTeam {
 public:
-    CoreTeam() = default;
+    CoreTeam() : cores_(machineCores()) {}
     CoreTeam(const CoreTeam&) = delete;
     CoreTeam& operator=(const CoreTeam&) = delete;
     ~CoreTeam() {
@@ -76,6 +78,9 @@ public:
         wake_.notify_all();
         for (std::thread& helper : helpers_) helper.join();
     }
+
+    /// How many threads forEach runs n tasks on.
+    std::size_t workersFor(std::size_t n) const { return detail::workersFor(n, cores_); }
 
     /// Calls task(i, w) for every i < n, w < workersFor(n) the number of the thread running it
     /// (for scratch space of its own), each thread taking every k-th block of 64 consecutive i.
@@ -143,6 +148,7 @@ private:
     std::size_t generation_ = 0, pending_ = 0;
     bool stop_ = false;
     std::vector<std::thread> helpers_;
+    std::size_t cores_;
 };
 
 }  // namespace ramus::detail

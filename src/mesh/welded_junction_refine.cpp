@@ -250,7 +250,7 @@ public:
         target_.resize(added);
         targetNormal_.resize(added);
         // The rays are independent: on the machine's cores, each with scratch space of its own.
-        rays_.resize(std::max<std::size_t>(workersFor(added), 1));
+        rays_.resize(team_.workersFor(added));
         team_.forEach(added, [&](std::size_t i, std::size_t worker) {
             if (owner_[i] == i)
                 target_[i] = restingPoint(onHull_[i], targetNormal_[i], rays_[worker]);
