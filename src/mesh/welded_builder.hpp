@@ -40,11 +40,13 @@ struct JunctionShape {
               ra(radiusFrom),
               rb(radiusTo),
               ab(to - from),
-              length2(ab.squaredNorm()) {}
+              length2(ab.squaredNorm()),
+              inverse2(length2 > 0.0 ? 1.0 / length2 : 0.0) {}
         Vec3 a, b;
         double ra, rb;
-        Vec3 ab;         ///< b − a
-        double length2;  ///< |b − a|²
+        Vec3 ab;          ///< b − a
+        double length2;   ///< |b − a|²
+        double inverse2;  ///< 1 / |b − a|² (0 for a ball)
         struct Point {
             Vec3 offset;    ///< from the nearest axis point to the query point
             double radius;  ///< the capsule's radius there

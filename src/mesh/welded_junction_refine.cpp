@@ -30,7 +30,7 @@
 namespace ramus::detail {
 
 JunctionShape::Capsule::Point JunctionShape::Capsule::nearest(const Vec3& p) const {
-    const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    const double t = std::clamp((p - a).dot(ab) * inverse2, 0.0, 1.0);
     return {p - a - t * ab, ra + t * (rb - ra)};
 }
 
@@ -607,9 +607,9 @@ private:
             const Vec3 w = p - c.a;
             const Vec3& ab = c.ab;
             const double length2 = c.length2;
-            const Ray::Along& along = ray.along.emplace_back(
-                w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab), length2,
-                length2 > 0.0 ? 1.0 / length2 : 0.0, c.ra, c.rb - c.ra, bound.distance);
+            const Ray::Along& along =
+                ray.along.emplace_back(w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab),
+                                       length2, c.inverse2, c.ra, c.rb - c.ra, bound.distance);
             steepest = std::max(steepest, along.dr * along.dr * along.inverse2);
         }
         return 1.0 / std::sqrt(1.0 + steepest);
@@ -734,13 +734,13 @@ private:
         const double beyond = centreDistance_ + farthest + shape_.fillet;
         const Vec3 ab = b - a;
         const double length2 = ab.squaredNorm();
+        const double inverse2 = length2 > 0.0 ? 1.0 / length2 : 0.0;
         std::vector<JunctionShape::Bound>& order = ray.order;
         order.clear();
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
             const Vec3 middle = spheres_[i].head<3>();
             const double reach = beyond + spheres_[i].w();
-            const double t =
-                length2 > 0.0 ? std::clamp((middle - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+            const double t = std::clamp((middle - a).dot(ab) * inverse2, 0.0, 1.0);
             const double apart2 = (middle - a - t * ab).squaredNorm();
             if (reach <= 0.0 || apart2 >= reach * reach) continue;
             order.push_back({std::sqrt(apart2) - spheres_[i].w(), static_cast<std::uint32_t>(i)});
