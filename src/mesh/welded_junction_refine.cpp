@@ -607,9 +607,9 @@ private:
             const Vec3 w = p - c.a;
             const Vec3& ab = c.ab;
             const double length2 = c.length2;
-            const Ray::Along& along =
-                ray.along.emplace_back(w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab),
-                                       length2, c.inverse2, c.ra, c.rb - c.ra, bound.distance);
+            const Ray::Along& along = ray.along.emplace_back(
+                Ray::Along{w.squaredNorm(), 2.0 * w.dot(u), u2, w.dot(ab), u.dot(ab), length2,
+                           c.inverse2, c.ra, c.rb - c.ra, bound.distance});
             steepest = std::max(steepest, along.dr * along.dr * along.inverse2);
         }
         return 1.0 / std::sqrt(1.0 + steepest);
