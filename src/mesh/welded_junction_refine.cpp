@@ -252,8 +252,9 @@ public:
         // The rays are independent: on the machine's cores, each with scratch space of its own.
         rays_.resize(team_.workersFor(added));
         team_.forEach(added, [&](std::size_t i, std::size_t worker) {
-            if (owner_[i] == i)
+            if (owner_[i] == i) {
                 target_[i] = restingPoint(onHull_[i], targetNormal_[i], rays_[worker]);
+            }
         });
         for (std::size_t i = 0; i < added; ++i) {
             if (owner_[i] != i) {  // a seam copy, at the same point as its owner
