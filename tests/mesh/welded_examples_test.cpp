@@ -291,5 +291,21 @@ TEST(WeldedExamples, Tree3dJunctionsIntersectNothingTropismNoMoreThanMeasured) {
     }
 }
 
+// Shrunk junctions move their vertices along rays that run on the machine's cores (each ray's
+// result in its own slot): welding a plant with many of them gives the same mesh every time,
+// whichever thread took which rays.
+TEST(WeldedExamples, ShrunkJunctionsGiveTheSameMeshEveryTime) {
+    const BranchTree tree = growLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/abop_1_27.lsys");
+    WeldReport report;
+    const Mesh first = buildWeldedTreeMesh(tree, {}, &report);
+    ASSERT_GT(report.refinedJunctions, 10u);
+    for (int run = 0; run < 3; ++run) {
+        const Mesh again = buildWeldedTreeMesh(tree);
+        EXPECT_EQ(first.positions, again.positions);
+        EXPECT_EQ(first.normals, again.normals);
+        EXPECT_EQ(first.indices, again.indices);
+    }
+}
+
 }  // namespace
 }  // namespace ramus
