@@ -14,40 +14,47 @@
 
 namespace ramus::detail {
 
+/// Tasks are shared out in blocks of this many consecutive ones, so that threads do not write
+/// to the same cache line.
+constexpr std::size_t kTaskBlock = 64;
+
 /// How many threads n tasks run on, given the machine's `cores`: up to as many as it has, at
-/// most 4, and one per 64 tasks.
+/// most 4, and one per block of tasks.
 inline std::size_t workersFor(std::size_t n, std::size_t cores) {
-    constexpr std::size_t kBlock = 64;
-    return std::min<std::size_t>({std::max<std::size_t>(1, cores), 4, n / kBlock + 1});
+    return std::min<std::size_t>({std::max<std::size_t>(1, cores), 4, n / kTaskBlock + 1});
 }
 
 /// The machine's cores (a system call: glibc reads /sys each time).
 inline std::size_t machineCores() { return std::thread::hardware_concurrency(); }
 
-/// Calls task(i) for every i < n, on workersFor(n, machineCores()) threads, each thread taking
-/// every k-th block of 64 consecutive i (blocks, so that threads do not write to the same cache
-/// line): for independent tasks whose results go to slot i, so the result does not depend on the
-/// threads. A task taking two arguments also gets its thread's number w below that, for scratch
-/// space of its own. The solid union's patch and piece votes took 10–20 % of its time on one
-/// core (ABOP 1.24b: 1.4 s an attempt); the shrunk junctions' rays most of the welding time of
-/// the dense ABOP plants.
-/// An exception from a task is passed on to the caller once every thread has finished.
+/// Thread w's share of n tasks on `threads` threads: every threads-th block from block w.
+/// A task taking two arguments also gets w.
+template <class Task>
+void runShare(std::size_t n, std::size_t threads, std::size_t w, const Task& task) {
+    for (std::size_t block = w * kTaskBlock; block < n; block += threads * kTaskBlock) {
+        for (std::size_t i = block; i < std::min(n, block + kTaskBlock); ++i) {
+            if constexpr (std::is_invocable_v<const Task&, std::size_t, std::size_t>) {
+                task(i, w);
+            } else {
+                task(i);
+            }
+        }
+    }
+}
+
+/// Calls task(i) for every i < n, on workersFor(n, machineCores()) threads (runShare): for
+/// independent tasks whose results go to slot i, so the result does not depend on the threads. A
+/// task taking two arguments also gets its thread's number w below that, for scratch space of its
+/// own. The solid union's patch and piece votes took 10–20 % of its time on one core
+/// (ABOP 1.24b: 1.4 s an attempt); the shrunk junctions' rays most of the welding time of the dense
+/// ABOP plants. An exception from a task is passed on to the caller once every thread has finished.
 template <class Task>
 void forEachOnCores(std::size_t n, const Task& task) {
-    constexpr std::size_t kBlock = 64;
     const std::size_t threads = workersFor(n, machineCores());
     std::vector<std::exception_ptr> failures(threads);
     auto share = [&](std::size_t w) {
         try {
-            for (std::size_t block = w * kBlock; block < n; block += threads * kBlock) {
-                for (std::size_t i = block; i < std::min(n, block + kBlock); ++i) {
-                    if constexpr (std::is_invocable_v<const Task&, std::size_t, std::size_t>) {
-                        task(i, w);
-                    } else {
-                        task(i);
-                    }
-                }
-            }
+            runShare(n, threads, w, task);
         } catch (...) {
             failures[w] = std::current_exception();
         }
@@ -82,18 +89,13 @@ public:
     /// How many threads forEach runs n tasks on.
     std::size_t workersFor(std::size_t n) const { return detail::workersFor(n, cores_); }
 
-    /// Calls task(i, w) for every i < n, w < workersFor(n) the number of the thread running it
-    /// (for scratch space of its own), each thread taking every k-th block of 64 consecutive i.
-    /// An exception from a task is passed on once every thread has finished.
+    /// Calls task(i, w) (or task(i)) for every i < n, w < workersFor(n) the number of the
+    /// thread running it (for scratch space of its own), shared out as runShare does. An
+    /// exception from a task is passed on once every thread has finished.
     template <class Task>
     void forEach(std::size_t n, const Task& task) {
-        constexpr std::size_t kBlock = 64;
         const std::size_t threads = workersFor(n);
-        auto share = [&](std::size_t w) {
-            for (std::size_t block = w * kBlock; block < n; block += threads * kBlock) {
-                for (std::size_t i = block; i < std::min(n, block + kBlock); ++i) task(i, w);
-            }
-        };
+        auto share = [&](std::size_t w) { runShare(n, threads, w, task); };
         if (threads == 1) {
             share(0);
             return;
