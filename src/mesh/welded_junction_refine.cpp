@@ -226,6 +226,15 @@ public:
             }
             hullFaces_.back().end = mesh_.indices.size();
         }
+        // What every shrink, whatever its centre, reads: the capsules' bounding spheres and the
+        // new vertices' seam copies.
+        spheres_.clear();
+        for (const JunctionShape::Capsule& c : shape_.capsules) {
+            const Vec3 middle = 0.5 * (c.a + c.b);
+            spheres_.emplace_back(middle.x(), middle.y(), middle.z(),
+                                  0.5 * std::sqrt(c.length2) + std::max(c.ra, c.rb));
+        }
+        findSeamCopies();
     }
 
     // Moves every new vertex to where its ray towards the centre enters the branches' surface,
@@ -235,18 +244,11 @@ public:
     void shrink(const Vec3& centre, const std::vector<Vec3>& samples) {
         centre_ = centre;
         centreDistance_ = shape_.plainDistance(centre);
-        spheres_.clear();
-        for (const JunctionShape::Capsule& c : shape_.capsules) {
-            const Vec3 middle = 0.5 * (c.a + c.b);
-            spheres_.emplace_back(middle.x(), middle.y(), middle.z(),
-                                  0.5 * std::sqrt(c.length2) + std::max(c.ra, c.rb));
-        }
         const std::size_t added = onHull_.size();
         // From the flat subdivision (a shrink towards another centre may have moved them).
         for (std::size_t i = 0; i < added; ++i) {
             mesh_.positions[firstNew_ + i] = onHull_[i].cast<float>();
         }
-        findSeamCopies();
         target_.resize(added);
         targetNormal_.resize(added);
         // The rays are independent: on the machine's cores, each with scratch space of its own.
