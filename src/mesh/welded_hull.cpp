@@ -63,6 +63,7 @@ bool ConvexHull::initialSimplex(std::span<const Vec3> points, double epsilon) {
     const std::int32_t f1 = addFace(points, a, d, b);
     const std::int32_t f2 = addFace(points, b, d, c);
     const std::int32_t f3 = addFace(points, c, d, a);
+    live_ = {f0, f1, f2, f3};
     // Neighbours across each directed edge: the face holding the reversed edge.
     for (std::int32_t f : {f0, f1, f2, f3}) {
         for (int e = 0; e < 3; ++e) {
@@ -84,11 +85,11 @@ bool ConvexHull::addPoint(std::span<const Vec3> points, std::uint32_t p, double 
     // Visible faces: the point lies more than epsilon above their plane.
     const std::uint32_t stamp = p + 1;
     visible_.clear();
-    for (std::size_t f = 0; f < faces_.size(); ++f) {
+    for (const std::int32_t f : live_) {
         Face& face = faces_[f];
-        if (face.alive && face.normal.dot(points[p]) - face.offset > epsilon) {
+        if (face.normal.dot(points[p]) - face.offset > epsilon) {
             face.visibleStamp = stamp;
-            visible_.push_back(static_cast<std::int32_t>(f));
+            visible_.push_back(f);
         }
     }
     if (visible_.empty()) return true;  // inside (or on) the hull
@@ -112,6 +113,9 @@ bool ConvexHull::addPoint(std::span<const Vec3> points, std::uint32_t p, double 
         }
     }
     for (std::int32_t f : visible_) faces_[f].alive = false;
+    // The scan above passes over the dead faces (most of those made, as the hull grows).
+    std::erase_if(live_, [&](std::int32_t f) { return !faces_[f].alive; });
+    live_.insert(live_.end(), created_.begin(), created_.end());
     bool closed = true;
     for (std::int32_t h : created_) {
         const std::uint32_t u = faces_[h].v[0];

@@ -50,6 +50,7 @@ private:
     std::vector<Face> faces_;
     std::vector<std::int32_t> startFace_;  // per point: new face whose horizon edge starts there
     std::vector<std::int32_t> endFace_;    // per point: new face whose horizon edge ends there
+    std::vector<std::int32_t> live_;       // the alive faces, in index order
     std::vector<std::int32_t> visible_;
     std::vector<std::int32_t> created_;
     std::vector<std::array<std::uint32_t, 3>> result_;

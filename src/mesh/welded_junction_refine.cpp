@@ -78,6 +78,15 @@ constexpr std::size_t kMaxCandidates = 8 * kMaxCapsules;
 // radii).
 constexpr std::size_t kMaxCentres = 3;
 constexpr std::size_t kMaxCentreCapsules = 64;
+// The third centre only where at most kMaxThirdCentreCapsules segments are in reach: there the
+// tries are cheap and gain most (conifer: at 6–8 segments the best centre leaves 5–14 % of the
+// first one's excess), while the junctions with more (ABOP 1.24a: 17–34, each try a few hundred
+// rays) rarely gain (in 1.24a the third centre was the best in 7 of 60, by 1–10 % of the
+// excess, and no silhouette changed). Measured in session 34 (every shipped example's
+// silhouette, paired benchmarks): welding ABOP 1.24a 191 → 128 ms, 1.27 34.5 → 27.6 ms;
+// silhouettes the same but hedge_4 (0.44 → 0.61 radii, within the tolerance of 1), hedge_2
+// (0.25 → 0.35) and 1.27 (4.0 → 4.0 % of the area).
+constexpr std::size_t kMaxThirdCentreCapsules = 16;
 // Junctions with more segments in reach, up to kMaxExcessCentreCapsules, try more centres too
 // where the faces around their halved moves leave much outside the branches: an excess
 // (excess(true)) of at least kLargeExcess thinnest radii cubed. Measured in session 21: ABOP
@@ -350,9 +359,10 @@ public:
     bool allMoved() const {
         return std::all_of(share_.begin(), share_.end(), [](double s) { return s == 1.0; });
     }
-    // How far the junction's faces stay outside the branches' surface: the distance of each
-    // face's centre beyond it times the face's area, summed; `halvedOnly`: over the faces with
-    // a corner whose move was halved alone.
+    // How far the junction's faces with a moved corner stay outside the branches' surface:
+    // the distance of each face's centre beyond it times the face's area, summed (the other
+    // faces are the same whatever the centre); `halvedOnly`: over the faces with a corner whose
+    // move was halved alone.
     double excess(bool halvedOnly = false) {
         const double iso = kSurfaceOffset * shape_.thinnest;
         const std::size_t faces = (mesh_.indices.size() - first_) / 3;
@@ -360,13 +370,13 @@ public:
         team_.forEach(faces, [&](std::size_t k, std::size_t) {
             excess_[k] = 0.0;
             const std::array<std::uint32_t, 3> v = face(first_ + 3 * k);
-            if (halvedOnly && std::none_of(v.begin(), v.end(), [&](std::uint32_t u) {
-                    return u >= firstNew_ && share_[owner_[u - firstNew_]] < 1.0;
+            if (std::none_of(v.begin(), v.end(), [&](std::uint32_t u) {
+                    return u >= firstNew_ && (!halvedOnly || share_[owner_[u - firstNew_]] < 1.0);
                 })) {
                 return;
             }
             const Vec3 a = position(v[0]), b = position(v[1]), c = position(v[2]);
-            const double out = shape_.distance((a + b + c) / 3.0) - iso;
+            const double out = distanceAt((a + b + c) / 3.0) - iso;
             if (out > 0.0) excess_[k] = out * 0.5 * (b - a).cross(c - a).norm();
         });
         double sum = 0.0;  // in face order, whatever the threads
@@ -375,6 +385,34 @@ public:
     }
 
 private:
+    // shape_.distance(p) with the capsule whose bounding sphere lies nearest folded in first:
+    // each capsule after it whose sphere lies a fillet beyond the nearest surface so far leaves
+    // the distance as it is, and is passed over (most of them: a face's centre lies near one
+    // or two branches of the dozens in reach).
+    double distanceAt(const Vec3& p) const {
+        if (spheres_.empty()) return shape_.distance(p);
+        std::size_t nearest = 0;
+        double least = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < spheres_.size(); ++i) {
+            const double below = (spheres_[i].head<3>() - p).norm() - spheres_[i].w();
+            if (below < least) {
+                least = below;
+                nearest = i;
+            }
+        }
+        SmoothUnionAt sum{p, false, {shape_.fillet}};
+        sum.add(shape_.capsules[nearest]);
+        for (std::size_t i = 0; i < spheres_.size(); ++i) {
+            if (i == nearest) continue;
+            const double beyond = sum.sum.plain + shape_.fillet + spheres_[i].w();
+            if ((spheres_[i].head<3>() - p).squaredNorm() >= beyond * beyond && beyond > 0.0) {
+                continue;
+            }
+            sum.add(shape_.capsules[i]);
+        }
+        return sum.result(nullptr);
+    }
+
     // Scratch space of one ray (one per thread).
     struct Ray {
         std::vector<JunctionShape::Bound> order;  // the capsules by distance from the ray
@@ -919,7 +957,8 @@ bool WeldBuilder::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
 
 // A junction over several branch nodes (a crotch of merged nodes, a cluster of tips) need
 // not be star-shaped from its first centre; where moves had to be halved, the branch nodes of
-// its arms that lie well inside the hull are tried as centres too (at most kMaxCentres in all),
+// its arms that lie well inside the hull are tried as centres too (at most kMaxCentres in all,
+// two where more than kMaxThirdCentreCapsules segments are in reach),
 // and the one that leaves the least of the surface outside the branches is kept.
 // With many segments in reach (each try runs over all of them) only where the faces around the
 // halved moves leave much outside.
@@ -936,8 +975,9 @@ void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
     std::vector<Vec3> tried{first};
     JunctionRefiner::Shrunk best = refiner.shrunk();
     bool lastIsBest = true;
+    const std::size_t centres = segments <= kMaxThirdCentreCapsules ? kMaxCentres : 2;
     for (const HullRing& h : hullRings_) {
-        if (tried.size() == kMaxCentres) break;
+        if (tried.size() == centres) break;
         if (!h.hole() ||
             std::any_of(tried.begin(), tried.end(),
                         [&](const Vec3& t) { return (t - h.node).norm() < thinnest; }) ||
