@@ -50,5 +50,29 @@ TEST(ConvexHull, ExtendingAHullGivesTheHullOfAllThePoints) {
     EXPECT_EQ(whole.faces().size(), 2 * corners.size() - 4);
 }
 
+// The builder keeps its scratch arrays (the faces alive among those made, too) between calls:
+// a hull built after another is the one a fresh builder makes.
+TEST(ConvexHull, AReusedBuilderGivesTheHullOfTheNewPoints) {
+    Rng rng(11);
+    auto randomPoints = [&](int n, double scale) {
+        std::vector<Vec3> points;
+        for (int i = 0; i < n; ++i) {
+            points.emplace_back(scale * rng.uniform(-1, 1), scale * rng.uniform(-1, 1),
+                                scale * rng.uniform(-1, 1));
+        }
+        return points;
+    };
+    const std::vector<Vec3> first = randomPoints(80, 1.0), second = randomPoints(25, 3.0);
+    ConvexHull reused;
+    ASSERT_TRUE(reused.build(first, 1e-12));
+    ASSERT_TRUE(reused.build(second, 1e-12));
+    ConvexHull fresh;
+    ASSERT_TRUE(fresh.build(second, 1e-12));
+    EXPECT_EQ(reused.faces(), fresh.faces());
+    for (const auto& f : reused.faces()) {
+        for (const std::uint32_t v : f) EXPECT_LT(v, second.size());
+    }
+}
+
 }  // namespace
 }  // namespace ramus::detail
