@@ -385,29 +385,23 @@ public:
     }
 
 private:
-    // shape_.distance(p) with the capsule whose bounding sphere lies nearest folded in first:
-    // each capsule after it whose sphere lies a fillet beyond the nearest surface so far leaves
-    // the distance as it is, and is passed over (most of them: a face's centre lies near one
-    // or two branches of the dozens in reach).
+    // shape_.distance(p) with the capsule whose bounding sphere's middle lies nearest folded in
+    // first: each capsule after it whose sphere lies a fillet beyond the nearest surface so far
+    // leaves the distance as it is, and is passed over (most of them: a face's centre lies near
+    // one or two branches of the dozens in reach), without a square root.
     double distanceAt(const Vec3& p) const {
-        if (spheres_.empty()) return shape_.distance(p);
+        std::array<double, kMaxCapsules> apart2;  // from p to each sphere's middle, squared
+        if (spheres_.empty() || spheres_.size() > apart2.size()) return shape_.distance(p);
         std::size_t nearest = 0;
-        double least = std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
-            const double below = (spheres_[i].head<3>() - p).norm() - spheres_[i].w();
-            if (below < least) {
-                least = below;
-                nearest = i;
-            }
+            apart2[i] = (spheres_[i].head<3>() - p).squaredNorm();
+            if (apart2[i] < apart2[nearest]) nearest = i;
         }
         SmoothUnionAt sum{p, false, {shape_.fillet}};
         sum.add(shape_.capsules[nearest]);
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
-            if (i == nearest) continue;
             const double beyond = sum.sum.plain + shape_.fillet + spheres_[i].w();
-            if ((spheres_[i].head<3>() - p).squaredNorm() >= beyond * beyond && beyond > 0.0) {
-                continue;
-            }
+            if (i == nearest || (apart2[i] >= beyond * beyond && beyond > 0.0)) continue;
             sum.add(shape_.capsules[i]);
         }
         return sum.result(nullptr);
