@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
@@ -33,6 +34,28 @@ template <class Task>
 void runShare(std::size_t n, std::size_t threads, std::size_t w, const Task& task) {
     for (std::size_t block = w * kTaskBlock; block < n; block += threads * kTaskBlock) {
         for (std::size_t i = block; i < std::min(n, block + kTaskBlock); ++i) {
+            if constexpr (std::is_invocable_v<const Task&, std::size_t, std::size_t>) {
+                task(i, w);
+            } else {
+                task(i);
+            }
+        }
+    }
+}
+
+/// Tasks a CoreTeam's threads claim at a time: small blocks, so that a thread that starts late
+/// (a helper waking up takes tens of microseconds on the VM) or draws slow tasks does not hold
+/// the others up.
+constexpr std::size_t kClaimBlock = 16;
+
+/// Runs the blocks of kClaimBlock tasks of n that thread w claims from `next` (shared by the
+/// threads of one batch) until none is left; a task taking two arguments also gets w.
+template <class Task>
+void runClaimed(std::size_t n, std::atomic<std::size_t>& next, std::size_t w, const Task& task) {
+    for (;;) {
+        const std::size_t block = next.fetch_add(kClaimBlock, std::memory_order_relaxed);
+        if (block >= n) return;
+        for (std::size_t i = block; i < std::min(n, block + kClaimBlock); ++i) {
             if constexpr (std::is_invocable_v<const Task&, std::size_t, std::size_t>) {
                 task(i, w);
             } else {
@@ -90,12 +113,15 @@ public:
     std::size_t workersFor(std::size_t n) const { return detail::workersFor(n, cores_); }
 
     /// Calls task(i, w) (or task(i)) for every i < n, w < workersFor(n) the number of the
-    /// thread running it (for scratch space of its own), shared out as runShare does. An
-    /// exception from a task is passed on once every thread has finished.
+    /// thread running it (for scratch space of its own), the threads claiming blocks of tasks
+    /// as they go (runClaimed): for tasks whose results go to slot i, so the result does not
+    /// depend on the threads. An exception from a task is passed on once every thread has
+    /// finished (the others' tasks may have run or not).
     template <class Task>
     void forEach(std::size_t n, const Task& task) {
         const std::size_t threads = workersFor(n);
-        auto share = [&](std::size_t w) { runShare(n, threads, w, task); };
+        std::atomic<std::size_t> next{0};
+        auto share = [&](std::size_t w) { runClaimed(n, next, w, task); };
         if (threads == 1) {
             share(0);
             return;
@@ -115,14 +141,16 @@ public:
                     failures[w] = std::current_exception();
                 }
             };
-            pending_ = helpers_.size();
+            open_ = true;
             ++generation_;
         }
         wake_.notify_all();
         batch_(0);
         {
+            // A helper not awake yet skips the batch: this thread claimed what it left.
             std::unique_lock lock(mutex_);
-            done_.wait(lock, [&] { return pending_ == 0; });
+            open_ = false;
+            done_.wait(lock, [&] { return running_ == 0; });
         }
         for (const std::exception_ptr& failure : failures) {
             if (failure) std::rethrow_exception(failure);
@@ -130,24 +158,29 @@ public:
     }
 
 private:
-    // Helper thread w: runs its share of every batch after the one numbered `seen`.
+    // Helper thread w: runs its share of every batch after the one numbered `seen` that is
+    // still open when it wakes.
     void help(std::size_t w, std::size_t seen) {
         std::unique_lock lock(mutex_);
         for (;;) {
             wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
             if (stop_) return;
             seen = generation_;
+            if (!open_) continue;
+            ++running_;
             lock.unlock();
             batch_(w);
             lock.lock();
-            if (--pending_ == 0) done_.notify_one();
+            if (--running_ == 0 && !open_) done_.notify_one();
         }
     }
 
     std::mutex mutex_;
     std::condition_variable wake_, done_;
     std::function<void(std::size_t)> batch_;  // runs thread w's share of the current batch
-    std::size_t generation_ = 0, pending_ = 0;
+    std::size_t generation_ = 0;
+    std::size_t running_ = 0;  // helpers in the current batch
+    bool open_ = false;        // whether a helper waking up joins the current batch
     bool stop_ = false;
     std::vector<std::thread> helpers_;
     std::size_t cores_;
