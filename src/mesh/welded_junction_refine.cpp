@@ -84,8 +84,8 @@ constexpr std::size_t kMaxCentreCapsules = 64;
 // rays) rarely gain (in 1.24a the third centre was the best in 7 of 60, by 1–10 % of the
 // excess, and no silhouette changed). Measured in session 34 (every shipped example's
 // silhouette, paired benchmarks): welding ABOP 1.24a 191 → 128 ms, 1.27 34.5 → 27.6 ms;
-// silhouettes the same but hedge_4 (0.44 → 0.61 radii, within the tolerance of 1), hedge_2
-// (0.25 → 0.35) and 1.27 (4.0 → 4.0 % of the area).
+// silhouettes the same but hedge_4 (largest view 0.44 → 0.61 radii, within the tolerance of
+// 1), hedge_2 (one view 0.25 → 0.35, its largest 0.54 as before) and 1.27 (area 3.99 → 3.97 %).
 constexpr std::size_t kMaxThirdCentreCapsules = 16;
 // Junctions with more segments in reach, up to kMaxExcessCentreCapsules, try more centres too
 // where the faces around their halved moves leave much outside the branches: an excess
