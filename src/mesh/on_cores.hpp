@@ -15,37 +15,21 @@
 
 namespace ramus::detail {
 
-/// Tasks are shared out in blocks of this many consecutive ones, so that threads do not write
-/// to the same cache line.
-constexpr std::size_t kTaskBlock = 64;
+/// Tasks per thread at least: fewer run on fewer threads (starting or waking one costs more).
+constexpr std::size_t kTasksPerThread = 64;
 
 /// How many threads n tasks run on, given the machine's `cores`: up to as many as it has, at
-/// most 4, and one per block of tasks.
+/// most 4, and one per kTasksPerThread tasks.
 inline std::size_t workersFor(std::size_t n, std::size_t cores) {
-    return std::min<std::size_t>({std::max<std::size_t>(1, cores), 4, n / kTaskBlock + 1});
+    return std::min<std::size_t>({std::max<std::size_t>(1, cores), 4, n / kTasksPerThread + 1});
 }
 
 /// The machine's cores (a system call: glibc reads /sys each time).
 inline std::size_t machineCores() { return std::thread::hardware_concurrency(); }
 
-/// Thread w's share of n tasks on `threads` threads: every threads-th block from block w.
-/// A task taking two arguments also gets w.
-template <class Task>
-void runShare(std::size_t n, std::size_t threads, std::size_t w, const Task& task) {
-    for (std::size_t block = w * kTaskBlock; block < n; block += threads * kTaskBlock) {
-        for (std::size_t i = block; i < std::min(n, block + kTaskBlock); ++i) {
-            if constexpr (std::is_invocable_v<const Task&, std::size_t, std::size_t>) {
-                task(i, w);
-            } else {
-                task(i);
-            }
-        }
-    }
-}
-
-/// Tasks a CoreTeam's threads claim at a time: small blocks, so that a thread that starts late
-/// (a helper waking up takes tens of microseconds on the VM) or draws slow tasks does not hold
-/// the others up.
+/// Tasks a thread claims at a time: small blocks, so that a thread that starts late (starting
+/// or waking one takes tens of microseconds on the VM) or draws slow tasks does not hold the
+/// others up, of consecutive tasks, so that threads seldom write to the same cache line.
 constexpr std::size_t kClaimBlock = 16;
 
 /// Runs the blocks of kClaimBlock tasks of n that thread w claims from `next` (shared by the
@@ -65,7 +49,7 @@ void runClaimed(std::size_t n, std::atomic<std::size_t>& next, std::size_t w, co
     }
 }
 
-/// Calls task(i) for every i < n, on workersFor(n, machineCores()) threads (runShare): for
+/// Calls task(i) for every i < n, on workersFor(n, machineCores()) threads (runClaimed): for
 /// independent tasks whose results go to slot i, so the result does not depend on the threads. A
 /// task taking two arguments also gets its thread's number w below that, for scratch space of its
 /// own. The solid union's patch and piece votes took 10–20 % of its time on one core
@@ -75,9 +59,10 @@ template <class Task>
 void forEachOnCores(std::size_t n, const Task& task) {
     const std::size_t threads = workersFor(n, machineCores());
     std::vector<std::exception_ptr> failures(threads);
+    std::atomic<std::size_t> next{0};
     auto share = [&](std::size_t w) {
         try {
-            runShare(n, threads, w, task);
+            runClaimed(n, next, w, task);
         } catch (...) {
             failures[w] = std::current_exception();
         }
