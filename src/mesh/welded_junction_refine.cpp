@@ -952,8 +952,8 @@ bool WeldBuilder::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
 // A junction over several branch nodes (a crotch of merged nodes, a cluster of tips) need
 // not be star-shaped from its first centre; where moves had to be halved, the branch nodes of
 // its arms that lie well inside the hull are tried as centres too (at most kMaxCentres in all,
-// two where more than kMaxThirdCentreCapsules segments are in reach),
-// and the one that leaves the least of the surface outside the branches is kept.
+// two where more than kMaxThirdCentreCapsules segments are in reach), and the one that leaves
+// the least of the surface outside the branches is kept.
 // With many segments in reach (each try runs over all of them) only where the faces around the
 // halved moves leave much outside.
 void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
