@@ -63,6 +63,8 @@ struct WindAttributes {
     /// Appends `count` bark vertices (leaf pair (0, 0)) with `sample`, for meshers that grow
     /// their vertex arrays as they go.
     void append(std::size_t count, const WindSample& sample);
+    /// Appends a copy of vertices [first, first + count) of `other`.
+    void appendFrom(const WindAttributes& other, std::size_t first, std::size_t count);
     std::size_t vertexCount() const { return pivot.size() / 3; }
     /// Appends the three attributes to mesh.attributes (sizes must match its vertex count).
     void moveInto(Mesh& mesh);

@@ -32,14 +32,15 @@ inline std::size_t machineCores() { return std::thread::hardware_concurrency(); 
 /// others up, of consecutive tasks, so that threads seldom write to the same cache line.
 constexpr std::size_t kClaimBlock = 16;
 
-/// Runs the blocks of kClaimBlock tasks of n that thread w claims from `next` (shared by the
+/// Runs the blocks of `claim` tasks of n that thread w claims from `next` (shared by the
 /// threads of one batch) until none is left; a task taking two arguments also gets w.
 template <class Task>
-void runClaimed(std::size_t n, std::atomic<std::size_t>& next, std::size_t w, const Task& task) {
+void runClaimed(std::size_t n, std::atomic<std::size_t>& next, std::size_t w, const Task& task,
+                std::size_t claim = kClaimBlock) {
     for (;;) {
-        const std::size_t block = next.fetch_add(kClaimBlock, std::memory_order_relaxed);
+        const std::size_t block = next.fetch_add(claim, std::memory_order_relaxed);
         if (block >= n) return;
-        for (std::size_t i = block; i < std::min(n, block + kClaimBlock); ++i) {
+        for (std::size_t i = block; i < std::min(n, block + claim); ++i) {
             if constexpr (std::is_invocable_v<const Task&, std::size_t, std::size_t>) {
                 task(i, w);
             } else {
@@ -49,20 +50,20 @@ void runClaimed(std::size_t n, std::atomic<std::size_t>& next, std::size_t w, co
     }
 }
 
-/// Calls task(i) for every i < n, on workersFor(n, machineCores()) threads (runClaimed): for
+/// Calls task(i) for every i < n on `threads` threads, each claiming `claim` tasks at a time
+/// (runClaimed; one for tasks of very different sizes, as the welded mesher's junctions): for
 /// independent tasks whose results go to slot i, so the result does not depend on the threads. A
-/// task taking two arguments also gets its thread's number w below that, for scratch space of its
-/// own. The solid union's patch and piece votes took 10–20 % of its time on one core
-/// (ABOP 1.24b: 1.4 s an attempt); the shrunk junctions' rays most of the welding time of the dense
-/// ABOP plants. An exception from a task is passed on to the caller once every thread has finished.
+/// task taking two arguments also gets its thread's number w below `threads`, for scratch space
+/// of its own. An exception from a task is passed on to the caller once every thread has
+/// finished.
 template <class Task>
-void forEachOnCores(std::size_t n, const Task& task) {
-    const std::size_t threads = workersFor(n, machineCores());
+void forEachOnThreads(std::size_t n, std::size_t threads, const Task& task,
+                      std::size_t claim = kClaimBlock) {
     std::vector<std::exception_ptr> failures(threads);
     std::atomic<std::size_t> next{0};
     auto share = [&](std::size_t w) {
         try {
-            runClaimed(n, next, w, task);
+            runClaimed(n, next, w, task, claim);
         } catch (...) {
             failures[w] = std::current_exception();
         }
@@ -76,6 +77,14 @@ void forEachOnCores(std::size_t n, const Task& task) {
     }
 }
 
+/// forEachOnThreads on workersFor(n, machineCores()) threads. The solid union's patch and piece
+/// votes took 10–20 % of its time on one core (ABOP 1.24b: 1.4 s an attempt); the shrunk
+/// junctions' rays most of the welding time of the dense ABOP plants.
+template <class Task>
+void forEachOnCores(std::size_t n, const Task& task) {
+    forEachOnThreads(n, workersFor(n, machineCores()), task);
+}
+
 /// Threads kept for many small batches of independent tasks: forEachOnCores starts its threads
 /// anew on every call, about 0.1 ms each with jemalloc on the 2-core VM, more than a shrunk
 /// junction's few hundred rays take. The helpers start with the first batch large enough to
@@ -83,6 +92,8 @@ void forEachOnCores(std::size_t n, const Task& task) {
 class CoreTeam {
 public:
     CoreTeam() : cores_(machineCores()) {}
+    /// A team of at most `cores` threads (1: every batch on the calling thread).
+    explicit CoreTeam(std::size_t cores) : cores_(cores) {}
     CoreTeam(const CoreTeam&) = delete;
     CoreTeam& operator=(const CoreTeam&) = delete;
     ~CoreTeam() {

@@ -26,7 +26,7 @@ SegmentGrid::SegmentGrid(const WeldSkeleton& s) {
         }
     }
     cell_ = count > 0 && total > 0.0 ? total / static_cast<double>(count) : 1.0;
-    seen_.assign(s.pointPosition.size(), 0);
+    points_ = s.pointPosition.size();
     for (const WeldLimb& limb : s.limbs) {
         for (std::uint32_t k = 0; k + 1 < limb.count; ++k) {
             const std::uint32_t p = limb.first + k;

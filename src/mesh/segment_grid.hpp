@@ -21,15 +21,23 @@ public:
     /// Indexes every segment (limb point p to p + 1 of one limb), its box grown by its radii.
     explicit SegmentGrid(const WeldSkeleton& skeleton);
 
+    /// Which segments a query has visited: one per thread asking (the grid itself is only
+    /// read, so threads share it).
+    struct Marks {
+        std::vector<std::uint32_t> seen;  // per point: the last query that visited it
+        std::uint32_t stamp = 0;
+    };
+
     /// Calls visit(p) once for every segment whose box meets the box of the ball (centre,
     /// radius): a superset of the segments within `radius` of `centre`; stops early when
     /// visit returns false. Returns whether it went through all.
     template <class Visit>
-    bool near(const Vec3& centre, double radius, Visit visit) {
-        ++stamp_;
+    bool near(const Vec3& centre, double radius, Marks& marks, Visit visit) const {
+        if (marks.seen.size() != points_) marks.seen.assign(points_, 0);
+        const std::uint32_t stamp = ++marks.stamp;
         auto once = [&](std::uint32_t p) {
-            if (seen_[p] == stamp_) return true;
-            seen_[p] = stamp_;
+            if (marks.seen[p] == stamp) return true;
+            marks.seen[p] = stamp;
             return visit(p);
         };
         for (const std::uint32_t p : large_) {
@@ -67,8 +75,7 @@ private:
     double cell_ = 1.0;
     std::vector<std::pair<std::uint64_t, std::uint32_t>> entries_;  // (cell key, point), sorted
     std::vector<std::uint32_t> large_;  // segments too large for cells: returned every time
-    std::vector<std::uint32_t> seen_;   // per point: last query
-    std::uint32_t stamp_ = 0;
+    std::size_t points_ = 0;            // of the skeleton (Marks::seen's size)
 };
 
 }  // namespace ramus::detail

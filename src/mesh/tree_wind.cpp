@@ -109,6 +109,16 @@ void WindAttributes::append(std::size_t count, const WindSample& s) {
     set(first, count, s);
 }
 
+void WindAttributes::appendFrom(const WindAttributes& other, std::size_t first, std::size_t count) {
+    auto copy = [&](std::vector<float>& to, const std::vector<float>& from, std::size_t width) {
+        const auto begin = from.begin() + static_cast<std::ptrdiff_t>(first * width);
+        to.insert(to.end(), begin, begin + static_cast<std::ptrdiff_t>(count * width));
+    };
+    copy(wind, other.wind, 4);
+    copy(pivot, other.pivot, 3);
+    copy(leaf, other.leaf, 2);
+}
+
 void WindAttributes::moveInto(Mesh& mesh) {
     mesh.attributes.push_back(VertexAttribute{kWindAttribute, 4, std::move(wind)});
     mesh.attributes.push_back(VertexAttribute{kWindPivotAttribute, 3, std::move(pivot)});

@@ -2,9 +2,12 @@
 // welded_junction_mesh.cpp (convex-hull junctions). Internal to src/mesh.
 #pragma once
 
+#include <array>
 #include <cstdint>
-#include <memory>
+#include <mutex>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "on_cores.hpp"
@@ -83,26 +86,30 @@ struct JunctionShape {
 
 class JunctionRefiner;  // welded_junction_refine.cpp
 
-class WeldBuilder {
+/// A SegmentGrid of the skeleton built by the first junction shrunk (on any mesher's thread):
+/// trees whose junctions need no shrinking never build it.
+class SharedSegmentGrid {
 public:
-    WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params);
-    Mesh build(WeldReport* report);
+    explicit SharedSegmentGrid(const WeldSkeleton& skeleton) : skeleton_(skeleton) {}
+    const SegmentGrid& get() {
+        std::call_once(built_, [&] { grid_.emplace(skeleton_); });
+        return *grid_;
+    }
 
 private:
-    struct LimbRing {
-        RingPlace place;
-        double v;
-    };
+    const WeldSkeleton& skeleton_;
+    std::once_flag built_;
+    std::optional<SegmentGrid> grid_;
+};
 
-    // welded_mesher.cpp
-    const AngleTable& table(int n);
-    void gatherLimbRings(std::int32_t limb);
-    void meshLimb(std::int32_t limb);
-    void meshAbsorbedLimb(std::int32_t limb);
-    void tubeAbsorbedLimb(std::int32_t limb);
-    void emitPointsBeforeRings(std::int32_t limb);
-    double vFromNode(const WeldLimb& limb, bool fromEnd, std::uint32_t k, double v) const;
-    double vAfterStep(std::uint32_t point, double v) const;
+/// Where the welded mesher's stages write: a mesh with its wind values, and the rings, sides
+/// and caps both stages emit (welded_mesher.cpp).
+class WeldEmitter {
+protected:
+    WeldEmitter(const WeldedMeshParams& params, const TreeWind& wind)
+        : params_(params), wind_(wind) {}
+
+    const AngleTable& table(int n);  // built on first use
     WindSample windAt(const RingPlace& place) const;
     RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
                         const WindSample& wind);
@@ -110,34 +117,47 @@ private:
     void emitSides(std::uint32_t a, std::uint32_t b, int n);
     void emitCap(const RingRecord& ring, const Vec3& normal, bool tip, const Vec3& centre);
 
-    // welded_junction_mesh.cpp
-    void meshJunction(NodeId cluster);
-    void gatherJunction(NodeId cluster);
-    bool buildHull(std::size_t firstRing = 0);
-    bool holesAreRings();
-    void emitHull();
-    double depthInHull(const Vec3& point) const;
-    bool addNodeBalls();
-    bool addBendRings();
-    void fallbackJunction();
-    std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
-
-    // welded_junction_refine.cpp
-    bool refineJunction(std::size_t firstIndex, bool judgeWebs);
-    void tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
-                        const std::vector<Vec3>& samples);
-    bool gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& reach);
-    bool hullWebbed(std::size_t firstIndex);
-    bool gatherJunctionShape(const Vec3& centre, double reach);
-    void addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach);
-    bool onArmRingEdge(std::uint32_t a, std::uint32_t b) const;
-
     const WeldedMeshParams& params_;
+    const TreeWind& wind_;            // read when params.tube.windAttributes
+    std::vector<AngleTable> tables_;  // by n, built on first use
+    Mesh mesh_;
+    WindAttributes windOut_;  // when params.tube.windAttributes
+};
+
+/// Appends a copy of vertices [first, first + count) of `from` (positions, normals, tangents,
+/// texture coordinates: the welded mesher's) to `to` (welded_junction_mesh.cpp).
+void appendVertices(Mesh& to, const Mesh& from, std::size_t first, std::size_t count);
+
+/// Texture v at limb point `point` of `s` from v at the point before it (welded_mesher.cpp).
+double vAfterStep(const WeldSkeleton& s, double vScale, std::uint32_t point, double v);
+
+class WeldBuilder : WeldEmitter {
+public:
+    /// Meshes junctions on up to `cores` threads (the same mesh whatever their number).
+    WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params,
+                std::size_t cores = machineCores());
+    Mesh build(WeldReport* report);
+
+private:
+    friend class JunctionMesher;  // reads the tubes' rings and what placed them
+    struct LimbRing {
+        RingPlace place;
+        double v;
+    };
+
+    // welded_mesher.cpp
+    void gatherLimbRings(std::int32_t limb);
+    void meshLimb(std::int32_t limb);
+    void meshAbsorbedLimb(std::int32_t limb);
+    void emitPointsBeforeRings(std::int32_t limb);
+    double vFromNode(const WeldLimb& limb, bool fromEnd, std::uint32_t k, double v) const;
+    void meshJunctions();
+
     WeldSkeleton skeleton_;
     WeldJunctions junctions_;
+    TreeWind treeWind_;  // when params.tube.windAttributes (wind_ refers to it)
     double margin_ = 0.05;
     double vScale_ = 1.0;
-    std::vector<AngleTable> tables_;               // by n - 3, built on first use
     std::vector<double> keyV_;                     // per node: texture v at key nodes
     std::vector<RingRecord> startRing_, endRing_;  // per limb: its rings at junctions
     std::vector<std::uint32_t> discFirst_;         // per limb + 1: absorbed rings in discs_
@@ -150,12 +170,40 @@ private:
     std::vector<std::uint32_t> beforeFirst_;
     std::vector<RingRecord> before_;
     std::vector<LimbRing> rings_;  // rings of the limb being meshed, reused
-    Mesh mesh_;
-    TreeWind wind_;  // when params.tube.windAttributes
-    WindAttributes windOut_;
     WeldReport report_;
+    SharedSegmentGrid segments_{skeleton_};
+    std::size_t cores_;
+    CoreTeam team_;  // shares a shrunk junction's rays (junctions meshed on one thread)
+};
 
-    // Junction scratch, reused.
+/// Meshes junctions one at a time, each into a piece of its own mesh_ after the pieces of the
+/// junctions before: the vertices of the tube rings it joins copied first (in the order of
+/// their vertex numbers in the tubes' mesh), then those it adds, then its triangles. Reads the
+/// builder's tubes and rings only, so several meshers run junctions on several threads; the
+/// builder appends the pieces in junction order (WeldBuilder::meshJunctions).
+class JunctionMesher : WeldEmitter {
+public:
+    /// A junction's piece of mesh_.
+    struct Piece {
+        std::uint32_t firstVertex = 0;  ///< its first copied tube vertex
+        std::uint32_t copied = 0;       ///< tube vertices copied (then those it added)
+        std::uint32_t endVertex = 0;
+        std::size_t firstIndex = 0, endIndex = 0;
+        std::size_t firstCopy = 0;  ///< into tubeVertices(): the copied vertices' numbers
+    };
+
+    /// `team` shares the rays of a shrunk junction.
+    JunctionMesher(WeldBuilder& builder, const Mesh& tubes, const WindAttributes& tubeWind,
+                   CoreTeam& team);
+    Piece meshJunction(NodeId cluster);
+    const Mesh& mesh() const { return mesh_; }
+    const WindAttributes& windOut() const { return windOut_; }
+    /// Per copied vertex, in the order of the pieces: its number in the tubes' mesh.
+    const std::vector<std::uint32_t>& tubeVertices() const { return tubeVertices_; }
+    /// The junction counters of every junction meshed (fallbacks, balls, bends, shrunk, tubed).
+    const WeldReport& report() const { return report_; }
+
+private:
     enum class HullRingKind : std::uint8_t {
         Arm,       // an arm's ring: its disc is cut out (a hole)
         Absorbed,  // a ring of a limb inside the junction: plain points
@@ -172,15 +220,67 @@ private:
         // Into pointsKept_ (ring.n flags: which of its points are hull points), or -1: all.
         std::int32_t kept = -1;
     };
-    RingRecord armBackToNode(const HullRing& h);  // welded_junction_mesh.cpp
+
+    // welded_junction_mesh.cpp
+    void gatherJunction(NodeId cluster);
+    void copyTubeRings();
+    void closeJunction();
+    bool buildHull(std::size_t firstRing = 0);
+    bool holesAreRings();
+    void emitHull();
+    double depthInHull(const Vec3& point) const;
+    bool addNodeBalls();
+    bool addBendRings();
+    void fallbackJunction();
+    void tubeAbsorbedLimb(std::int32_t limb);
+    std::uint32_t seamVertex(std::uint32_t point, const std::array<std::uint32_t, 3>& face) const;
+    RingRecord armBackToNode(const HullRing& h);
     double ballRoom(const Vec3& node, std::size_t arms, double& radius) const;
     void emitBall(const HullRing& h, double radius);
+
+    // welded_junction_refine.cpp
+    bool refineJunction(std::size_t firstIndex, bool judgeWebs);
+    void tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
+                        const std::vector<Vec3>& samples);
+    bool gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& reach);
+    bool hullWebbed(std::size_t firstIndex);
+    bool gatherJunctionShape(const Vec3& centre, double reach);
+    void addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach);
+    bool onArmRingEdge(std::uint32_t a, std::uint32_t b) const;
+
+    // The builder's, read only.
+    const WeldSkeleton& skeleton_;
+    const WeldJunctions& junctions_;
+    const double margin_, vScale_;
+    const std::vector<double>& keyV_;
+    const std::vector<RingRecord>& startRing_;
+    const std::vector<RingRecord>& endRing_;
+    const std::vector<std::uint32_t>& discFirst_;
+    const std::vector<std::uint8_t>& continuesChain_;
+    const std::vector<RingRecord>& discs_;
+    const std::vector<std::uint32_t>& beforeFirst_;
+    const std::vector<RingRecord>& before_;
+    SharedSegmentGrid& segments_;
+    const Mesh& tubes_;  // the builder's mesh of the tubes, and their wind values
+    const WindAttributes& tubeWind_;
+    CoreTeam& team_;
+
+    WeldReport report_;
+    std::vector<std::uint32_t> tubeVertices_;  // see tubeVertices()
+
+    // Junction scratch, reused.
     std::vector<HullRing> hullRings_;
     std::vector<std::uint8_t> pointsKept_;  // see HullRing::kept
     std::vector<Vec3> points_;
     std::vector<std::int32_t> pointRing_;   // per hull point: index into hullRings_
     std::vector<std::int32_t> pointIndex_;  // per hull point: vertex in its ring, -1 = apex
     std::vector<int> coneFaces_;
+    struct TubeRing {  // a ring of the tubes' mesh copied into mesh_ (copyTubeRings)
+        std::uint32_t base, count, copy;
+        bool operator<(const TubeRing& o) const { return base < o.base; }
+        bool operator==(const TubeRing& o) const { return base == o.base; }
+    };
+    std::vector<TubeRing> tubeRings_;
     ConvexHull hull_;
     double hullExtent_ = 0.0;  // of the points of the last hull built (for its perturbation)
     // Per face of hull_, for depthInHull: its outward unit normal and the normal's dot with
@@ -190,10 +290,8 @@ private:
         double offset;
     };
     std::vector<Plane> hullPlanes_;
-
     JunctionShape shape_;
-    std::unique_ptr<SegmentGrid> segments_;  // built on the first junction shrunk
-    CoreTeam team_;                          // shares a shrunk junction's rays
+    SegmentGrid::Marks segmentMarks_;
 };
 
 }  // namespace ramus::detail

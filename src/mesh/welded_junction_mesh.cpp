@@ -30,9 +30,40 @@
 
 namespace ramus::detail {
 
+JunctionMesher::JunctionMesher(WeldBuilder& builder, const Mesh& tubes,
+                               const WindAttributes& tubeWind, CoreTeam& team)
+    : WeldEmitter(builder.params_, builder.wind_),
+      skeleton_(builder.skeleton_),
+      junctions_(builder.junctions_),
+      margin_(builder.margin_),
+      vScale_(builder.vScale_),
+      keyV_(builder.keyV_),
+      startRing_(builder.startRing_),
+      endRing_(builder.endRing_),
+      discFirst_(builder.discFirst_),
+      continuesChain_(builder.continuesChain_),
+      discs_(builder.discs_),
+      beforeFirst_(builder.beforeFirst_),
+      before_(builder.before_),
+      segments_(builder.segments_),
+      tubes_(tubes),
+      tubeWind_(tubeWind),
+      team_(team) {}
+
+void appendVertices(Mesh& to, const Mesh& from, std::size_t first, std::size_t count) {
+    auto copy = [&](auto& into, const auto& values) {
+        const auto begin = values.begin() + static_cast<std::ptrdiff_t>(first);
+        into.insert(into.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
+    };
+    copy(to.positions, from.positions);
+    copy(to.normals, from.normals);
+    copy(to.tangents, from.tangents);
+    copy(to.uvs, from.uvs);
+}
+
 // Rings of the junction's arms (holes), with the rings of their limbs' points before them,
 // and of the limbs inside it (plain points).
-void WeldBuilder::gatherJunction(NodeId cluster) {
+void JunctionMesher::gatherJunction(NodeId cluster) {
     hullRings_.clear();
     pointsKept_.clear();
     const WeldSkeleton& s = skeleton_;
@@ -61,9 +92,33 @@ void WeldBuilder::gatherJunction(NodeId cluster) {
     }
 }
 
+// Copies the vertices of the gathered rings (all the tubes') into mesh_ and renumbers the
+// rings to the copies. In the order of their numbers in the tubes' mesh, and the junction's
+// own vertices after them: the junction sees its vertices in the order one mesh for the whole
+// tree would have them, so its result does not depend on which mesher ran it.
+void JunctionMesher::copyTubeRings() {
+    tubeRings_.clear();
+    for (const HullRing& h : hullRings_) {
+        tubeRings_.push_back({h.ring.base, static_cast<std::uint32_t>(h.ring.n + 1), 0});
+    }
+    std::sort(tubeRings_.begin(), tubeRings_.end());
+    tubeRings_.erase(std::unique(tubeRings_.begin(), tubeRings_.end()), tubeRings_.end());
+    for (TubeRing& ring : tubeRings_) {
+        ring.copy = static_cast<std::uint32_t>(mesh_.positions.size());
+        appendVertices(mesh_, tubes_, ring.base, ring.count);
+        if (params_.tube.windAttributes) windOut_.appendFrom(tubeWind_, ring.base, ring.count);
+        for (std::uint32_t k = 0; k < ring.count; ++k) tubeVertices_.push_back(ring.base + k);
+    }
+    for (HullRing& h : hullRings_) {
+        h.ring.base =
+            std::lower_bound(tubeRings_.begin(), tubeRings_.end(), TubeRing{h.ring.base, 0, 0})
+                ->copy;
+    }
+}
+
 // Hull of the gathered rings (and the planes of its faces); false where it fails.
 // `firstRing` > 0: the rings from there on are added to the hull last built of those before.
-bool WeldBuilder::buildHull(std::size_t firstRing) {
+bool JunctionMesher::buildHull(std::size_t firstRing) {
     if (firstRing == 0) {
         points_.clear();
         pointRing_.clear();
@@ -119,7 +174,7 @@ bool WeldBuilder::buildHull(std::size_t firstRing) {
 // Whether each arm's disc is a hole of the hull: n faces at its apex, each on one ring edge,
 // wound as the tube expects (a ring that starts its limb is seen from behind by the hull, one
 // that ends it from the front).
-bool WeldBuilder::holesAreRings() {
+bool JunctionMesher::holesAreRings() {
     std::vector<int>& coneFaces = coneFaces_;
     coneFaces.assign(hullRings_.size(), 0);
     for (const auto& face : hull_.faces()) {
@@ -142,7 +197,7 @@ bool WeldBuilder::holesAreRings() {
 }
 
 // Appends the hull's faces that are not ring discs.
-void WeldBuilder::emitHull() {
+void JunctionMesher::emitHull() {
     for (const auto& face : hull_.faces()) {
         if (pointIndex_[face[0]] < 0 || pointIndex_[face[1]] < 0 || pointIndex_[face[2]] < 0) {
             continue;
@@ -153,7 +208,7 @@ void WeldBuilder::emitHull() {
 
 // How far `point` lies inside the last hull built; negative outside (then not how far: the
 // callers only ask whether it is at least some depth).
-double WeldBuilder::depthInHull(const Vec3& point) const {
+double JunctionMesher::depthInHull(const Vec3& point) const {
     const Vec3 p = point - hullRings_.front().ring.center;  // hull points are relative to it
     double depth = std::numeric_limits<double>::infinity();
     for (const Plane& plane : hullPlanes_) {
@@ -174,7 +229,7 @@ double WeldBuilder::depthInHull(const Vec3& point) const {
 // of 3 000 junctions there, 26 of them with the node outside the hull).
 constexpr double kBareDepth = 0.1;
 
-bool WeldBuilder::addNodeBalls() {
+bool JunctionMesher::addNodeBalls() {
     const std::size_t arms = hullRings_.size();
     bool added = false;
     for (std::size_t i = 0; i < arms; ++i) {
@@ -208,7 +263,7 @@ constexpr double kBendTurnCosine = 0.9848077530122080;  // cos 10°
 // 0.05 the solid union of ABOP 1.24c kept a crossing pair whatever its moves (session 24).
 constexpr double kBendOutside = 0.1;
 
-bool WeldBuilder::addBendRings() {
+bool JunctionMesher::addBendRings() {
     const WeldSkeleton& s = skeleton_;
     const std::size_t arms = hullRings_.size();
     bool added = false;
@@ -287,7 +342,7 @@ bool WeldBuilder::addBendRings() {
 // How large a ball at `node` may be: the least distance from it to an arm's ring plane, less
 // the clearance; `radius` receives the thickest radius of the arms at `node` (of the first
 // `arms` hull rings, which are the junction's own).
-double WeldBuilder::ballRoom(const Vec3& node, std::size_t arms, double& radius) const {
+double JunctionMesher::ballRoom(const Vec3& node, std::size_t arms, double& radius) const {
     double room = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < arms; ++j) {
         const HullRing& arm = hullRings_[j];
@@ -305,7 +360,7 @@ double WeldBuilder::ballRoom(const Vec3& node, std::size_t arms, double& radius)
 
 // A ball of `radius` at arm h's branch node, as four latitude rings about the arm's axis
 // (hull points, shaded as the ball), with the wind values of the node (as absorbed limbs).
-void WeldBuilder::emitBall(const HullRing& h, double radius) {
+void JunctionMesher::emitBall(const HullRing& h, double radius) {
     const WeldLimb& limb = skeleton_.limbs[static_cast<std::size_t>(h.limb)];
     const NodeId node = h.start ? limb.startKey : limb.endKey;
     const Vec3 axis = h.ring.outward;
@@ -331,8 +386,8 @@ void WeldBuilder::emitBall(const HullRing& h, double radius) {
 
 // The mesh vertex of hull point `point` in `face`: a ring's vertex 0 is taken as its seam copy
 // (u = 1) when the face's other corners on that ring lie past the ring's middle.
-std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
-                                      const std::array<std::uint32_t, 3>& face) const {
+std::uint32_t JunctionMesher::seamVertex(std::uint32_t point,
+                                         const std::array<std::uint32_t, 3>& face) const {
     const std::int32_t r = pointRing_[point];
     const RingRecord& ring = hullRings_[static_cast<std::size_t>(r)].ring;
     const int k = pointIndex_[point];
@@ -357,7 +412,7 @@ std::uint32_t WeldBuilder::seamVertex(std::uint32_t point,
 // the arm's ring and the node (a crowded junction pushes rings far along their limbs, up to
 // their far ends, and a straight tube from there would leave a bent limb). Returns the ring
 // nearest the node (the arm's own when no point lies between), facing away from the node.
-RingRecord WeldBuilder::armBackToNode(const HullRing& h) {
+RingRecord JunctionMesher::armBackToNode(const HullRing& h) {
     const WeldSkeleton& s = skeleton_;
     const auto li = static_cast<std::size_t>(h.limb);
     const WeldLimb& limb = s.limbs[li];
@@ -390,7 +445,7 @@ RingRecord WeldBuilder::armBackToNode(const HullRing& h) {
     return arm;
 }
 
-void WeldBuilder::fallbackJunction() {
+void JunctionMesher::fallbackJunction() {
     for (const HullRing& h : hullRings_) {
         if (!h.hole()) continue;
         const RingRecord arm = armBackToNode(h);
@@ -432,9 +487,53 @@ void WeldBuilder::fallbackJunction() {
     }
 }
 
-void WeldBuilder::meshJunction(NodeId cluster) {
+// An absorbed limb of a fallback junction: a tube through its points, run a
+// quarter of the radius past both end nodes and closed there by cones half the radius long,
+// as the fallback's arms are, so that it overlaps them (the solid union joins them).
+void JunctionMesher::tubeAbsorbedLimb(std::int32_t l) {
+    const WeldSkeleton& s = skeleton_;
+    const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
+    double v = keyV_[static_cast<std::size_t>(limb.startKey)];
+    RingRecord previous{};
+    for (std::uint32_t k = 0; k < limb.count; ++k) {
+        RingPlace place = ringAtPoint(s, limb, k);
+        const double past = 0.25 * place.radius;
+        if (k == 0) place.center -= past * place.normal;
+        if (k + 1 == limb.count) place.center += past * place.normal;
+        if (k == 0) {
+            previous = emitRing(place, initialReference(place.normal), static_cast<float>(v),
+                                limb.segments, windAt(place));
+            emitCap(previous, -place.normal, false, place.center - 2.0 * past * place.normal);
+            continue;
+        }
+        v = vAfterStep(s, vScale_, limb.first + k, v);
+        const RingRecord ring = ringAfter(previous, place, static_cast<float>(v));
+        emitSides(previous.base, ring.base, limb.segments);
+        previous = ring;
+    }
+    const Vec3 normal = previous.e1.cross(previous.e2);
+    emitCap(previous, normal, true, previous.center + 0.5 * previous.radius * normal);
+}
+
+JunctionMesher::Piece JunctionMesher::meshJunction(NodeId cluster) {
+    Piece piece;
+    piece.firstVertex = static_cast<std::uint32_t>(mesh_.positions.size());
+    piece.firstIndex = mesh_.indices.size();
+    piece.firstCopy = tubeVertices_.size();
     gatherJunction(cluster);
-    if (hullRings_.empty()) return;
+    if (!hullRings_.empty()) {
+        copyTubeRings();
+        piece.copied = static_cast<std::uint32_t>(tubeVertices_.size() - piece.firstCopy);
+        closeJunction();
+    }
+    piece.endVertex = static_cast<std::uint32_t>(mesh_.positions.size());
+    piece.endIndex = mesh_.indices.size();
+    return piece;
+}
+
+// The junction gathered: its hull with the arms' discs cut out (shrunk onto the branches with
+// shrinkJunctions), or, where that fails, the fallback's tubes.
+void JunctionMesher::closeJunction() {
     const std::size_t before = mesh_.indices.size();
     bool closed = buildHull() && holesAreRings();
     if (closed && addNodeBalls()) closed = buildHull() && holesAreRings();

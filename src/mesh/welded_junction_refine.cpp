@@ -844,7 +844,7 @@ double JunctionShape::distance(const Vec3& p, std::span<const Bound> order, Vec3
 // the faces from `firstIndex`) as capsules, and its thinnest arm: `centre` receives the mean of
 // the faces' corners (strictly inside a convex hull), `reach` the largest distance of a corner
 // from it. False where there is nothing to judge by.
-bool WeldBuilder::gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& reach) {
+bool JunctionMesher::gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& reach) {
     if (mesh_.indices.size() == firstIndex) return false;
     centre = Vec3::Zero();
     for (std::size_t i = firstIndex; i < mesh_.indices.size(); ++i) {
@@ -875,7 +875,7 @@ bool WeldBuilder::gatherOwnShape(std::size_t firstIndex, Vec3& centre, double& r
 // With the solid union and convex junctions (the retry where the shrunk ones do not unite
 // cleanly): whether the hull's faces from `firstIndex` lie more than kUnionWebLimit local radii
 // outside the junction's own branches; such junctions are tubes there too.
-bool WeldBuilder::hullWebbed(std::size_t firstIndex) {
+bool JunctionMesher::hullWebbed(std::size_t firstIndex) {
     Vec3 centre;
     double reach = 0.0;
     if (!gatherOwnShape(firstIndex, centre, reach)) return false;
@@ -885,12 +885,10 @@ bool WeldBuilder::hullWebbed(std::size_t firstIndex) {
 // The branches within reach of the junction's hull (centre `centre`, radius `reach`): its arms
 // and absorbed limbs, and any other branch that passes through it (a crossing in the
 // skeleton; the shrunk surface must keep it inside, as the hull did), as tapered capsules.
-bool WeldBuilder::gatherJunctionShape(const Vec3& centre, double reach) {
-    const WeldSkeleton& s = skeleton_;
+bool JunctionMesher::gatherJunctionShape(const Vec3& centre, double reach) {
     shape_.capsules.clear();
-    if (!segments_) segments_ = std::make_unique<SegmentGrid>(s);
     std::size_t candidates = 0;
-    return segments_->near(centre, reach, [&](std::uint32_t p) {
+    return segments_.get().near(centre, reach, segmentMarks_, [&](std::uint32_t p) {
         addSegmentInReach(p, centre, reach);
         return shape_.capsules.size() <= kMaxCapsules && ++candidates <= kMaxCandidates;
     });
@@ -898,7 +896,7 @@ bool WeldBuilder::gatherJunctionShape(const Vec3& centre, double reach) {
 
 // Adds the segment from limb point p to p + 1 to the shape if its capsule comes within
 // `reach` of `centre`.
-void WeldBuilder::addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach) {
+void JunctionMesher::addSegmentInReach(std::uint32_t p, const Vec3& centre, double reach) {
     const WeldSkeleton& s = skeleton_;
     const JunctionShape::Capsule capsule{s.pointPosition[p], s.pointPosition[p + 1],
                                          s.pointRadius[p], s.pointRadius[p + 1]};
@@ -937,7 +935,7 @@ bool JunctionShape::farOutside(const Vec3& p, double limit) const {
 
 // Whether mesh vertices a and b are neighbours on one arm's ring (an edge the arm's tube
 // shares: it must stay whole).
-bool WeldBuilder::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
+bool JunctionMesher::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
     for (const HullRing& h : hullRings_) {
         if (!h.hole()) continue;
         const std::uint32_t base = h.ring.base;
@@ -956,8 +954,8 @@ bool WeldBuilder::onArmRingEdge(std::uint32_t a, std::uint32_t b) const {
 // the least of the surface outside the branches is kept.
 // With many segments in reach (each try runs over all of them) only where the faces around the
 // halved moves leave much outside.
-void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
-                                 const std::vector<Vec3>& samples) {
+void JunctionMesher::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
+                                    const std::vector<Vec3>& samples) {
     const std::size_t segments = shape_.capsules.size();
     if (segments > kMaxExcessCentreCapsules) return;
     const double thinnest = shape_.thinnest;
@@ -996,7 +994,7 @@ void WeldBuilder::tryMoreCentres(JunctionRefiner& refiner, const Vec3& first,
 // cut through each other whether shrunk or not, along curves of about the same length
 // (conifer: 58.3 units as hulls, 59.2 shrunk), and as hulls they bulge far out (conifer: a bump
 // of 11.8 twig radii beside the trunk, 0.26 shrunk).
-bool WeldBuilder::refineJunction(std::size_t firstIndex, bool judgeWebs) {
+bool JunctionMesher::refineJunction(std::size_t firstIndex, bool judgeWebs) {
     Vec3 centre;
     double reach = 0.0;
     // Webs are judged against the junction's own branches alone (few capsules: most junctions

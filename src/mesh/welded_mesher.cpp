@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <utility>
 
@@ -57,7 +58,8 @@ bool ringsApart(const RingPlace& a, const RingPlace& b) {
 
 }  // namespace
 
-WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params) : params_(params) {
+WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params, std::size_t cores)
+    : WeldEmitter(params, treeWind_), cores_(cores), team_(cores) {
     margin_ =
         std::isfinite(params.junctionMargin) ? std::clamp(params.junctionMargin, 0.01, 1.0) : 0.05;
     const double aspect = params.tube.uvAspect > 0.0 && std::isfinite(params.tube.uvAspect)
@@ -66,7 +68,7 @@ WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
     vScale_ = 1.0 / (aspect * kPi);
     skeleton_ = buildWeldSkeleton(tree, params.tube);
     junctions_ = solveWeldJunctions(skeleton_, margin_);
-    if (params.tube.windAttributes) wind_ = TreeWind(tree, params.tube.windSeed);
+    if (params.tube.windAttributes) treeWind_ = TreeWind(tree, params.tube.windSeed);
     continuesChain_.assign(skeleton_.limbs.size(), 0);
     for (std::size_t l = 0; l < skeleton_.limbs.size(); ++l) {
         const BranchNode& child = tree.node(skeleton_.pointNode[skeleton_.limbs[l].first + 1]);
@@ -75,12 +77,12 @@ WeldBuilder::WeldBuilder(const BranchTree& tree, const WeldedMeshParams& params)
     }
 }
 
-WindSample WeldBuilder::windAt(const RingPlace& place) const {
+WindSample WeldEmitter::windAt(const RingPlace& place) const {
     if (!params_.tube.windAttributes) return {};
     return wind_.at(place.edgeNode, place.edgeFraction);
 }
 
-const AngleTable& WeldBuilder::table(int n) {
+const AngleTable& WeldEmitter::table(int n) {
     const auto index = static_cast<std::size_t>(n);
     if (tables_.size() <= index) tables_.resize(index + 1);
     AngleTable& entry = tables_[index];
@@ -208,11 +210,13 @@ void WeldBuilder::emitPointsBeforeRings(std::int32_t l) {
 // the steps of vAfterStep between them (v falls along the limb).
 double WeldBuilder::vFromNode(const WeldLimb& limb, bool fromEnd, std::uint32_t k, double v) const {
     if (!fromEnd) {
-        for (std::uint32_t i = 1; i <= k; ++i) v = vAfterStep(limb.first + i, v);
+        for (std::uint32_t i = 1; i <= k; ++i)
+            v = vAfterStep(skeleton_, vScale_, limb.first + i, v);
         return v;
     }
     for (std::uint32_t i = limb.count - 1; i > k; --i) {
-        v += v - vAfterStep(limb.first + i, v);  // towards the start v rises by the same steps
+        v += v - vAfterStep(skeleton_, vScale_, limb.first + i,
+                            v);  // towards the start v rises by the same steps
     }
     return v;
 }
@@ -237,7 +241,7 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
     const WindSample wind = params_.tube.windAttributes ? wind_.at(limb.startKey) : WindSample{};
     for (std::uint32_t k = 0; k < limb.count; ++k) {
         if (k > 0) {
-            v = vAfterStep(limb.first + k, v);
+            v = vAfterStep(s, vScale_, limb.first + k, v);
         } else if (startShown) {
             continue;
         }
@@ -249,43 +253,14 @@ void WeldBuilder::meshAbsorbedLimb(std::int32_t l) {
 }
 
 // Texture v at limb point `point` from v at the point before it (see the file comment).
-double WeldBuilder::vAfterStep(std::uint32_t point, double v) const {
-    const WeldSkeleton& s = skeleton_;
-    return v - (s.pointArc[point] - s.pointArc[point - 1]) * vScale_ /
+double vAfterStep(const WeldSkeleton& s, double vScale, std::uint32_t point, double v) {
+    return v - (s.pointArc[point] - s.pointArc[point - 1]) * vScale /
                    (s.pointRadius[point - 1] + s.pointRadius[point]);
-}
-
-// An absorbed limb of a fallback junction: a tube through its points, run a
-// quarter of the radius past both end nodes and closed there by cones half the radius long,
-// as the fallback's arms are, so that it overlaps them (the solid union joins them).
-void WeldBuilder::tubeAbsorbedLimb(std::int32_t l) {
-    const WeldSkeleton& s = skeleton_;
-    const WeldLimb& limb = s.limbs[static_cast<std::size_t>(l)];
-    double v = keyV_[static_cast<std::size_t>(limb.startKey)];
-    RingRecord previous{};
-    for (std::uint32_t k = 0; k < limb.count; ++k) {
-        RingPlace place = ringAtPoint(s, limb, k);
-        const double past = 0.25 * place.radius;
-        if (k == 0) place.center -= past * place.normal;
-        if (k + 1 == limb.count) place.center += past * place.normal;
-        if (k == 0) {
-            previous = emitRing(place, initialReference(place.normal), static_cast<float>(v),
-                                limb.segments, windAt(place));
-            emitCap(previous, -place.normal, false, place.center - 2.0 * past * place.normal);
-            continue;
-        }
-        v = vAfterStep(limb.first + k, v);
-        const RingRecord ring = ringAfter(previous, place, static_cast<float>(v));
-        emitSides(previous.base, ring.base, limb.segments);
-        previous = ring;
-    }
-    const Vec3 normal = previous.e1.cross(previous.e2);
-    emitCap(previous, normal, true, previous.center + 0.5 * previous.radius * normal);
 }
 
 // The ring at `place` that follows ring `previous` of the same tube, its frame carried along
 // the step between them as the tube mesher's (rotation-minimizing).
-RingRecord WeldBuilder::ringAfter(const RingRecord& previous, const RingPlace& place, float v) {
+RingRecord WeldEmitter::ringAfter(const RingRecord& previous, const RingPlace& place, float v) {
     const Vec3 step = place.center - previous.center;
     const double length = step.norm();
     const Vec3 e1 =
@@ -294,7 +269,7 @@ RingRecord WeldBuilder::ringAfter(const RingRecord& previous, const RingPlace& p
     return emitRing(place, e1, v, previous.n, windAt(place));
 }
 
-RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
+RingRecord WeldEmitter::emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
                                  const WindSample& wind) {
     const AngleTable& angles = table(n);
     RingRecord ring;
@@ -325,7 +300,7 @@ RingRecord WeldBuilder::emitRing(const RingPlace& place, const Vec3& e1, float v
 }
 
 // Quads between ring `a` (behind) and ring `b` (ahead), counter-clockwise seen from outside.
-void WeldBuilder::emitSides(std::uint32_t a, std::uint32_t b, int n) {
+void WeldEmitter::emitSides(std::uint32_t a, std::uint32_t b, int n) {
     for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
         mesh_.indices.insert(mesh_.indices.end(),
                              {a + i, a + i + 1, b + i + 1, a + i, b + i + 1, b + i});
@@ -336,7 +311,7 @@ void WeldBuilder::emitSides(std::uint32_t a, std::uint32_t b, int n) {
 // elsewhere a cone), shaded as facing `normal`: own vertices (positions copied bit-exactly
 // from the ring), disc UVs, tangent e1. `tip`: the ring faces the same way as the cap (else
 // the cap closes the ring's back).
-void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip,
+void WeldEmitter::emitCap(const RingRecord& ring, const Vec3& normal, bool tip,
                           const Vec3& centre) {
     const AngleTable& angles = table(ring.n);
     const auto n = static_cast<std::uint32_t>(ring.n);
@@ -358,6 +333,71 @@ void WeldBuilder::emitCap(const RingRecord& ring, const Vec3& normal, bool tip,
         const std::uint32_t a = hub + 1 + i;
         const std::uint32_t b = hub + 1 + (i + 1 == n ? 0 : i + 1);
         mesh_.indices.insert(mesh_.indices.end(), {hub, tip ? a : b, tip ? b : a});
+    }
+}
+
+// Meshes every junction (JunctionMesher) and appends the pieces in junction order: a piece's
+// copies of tube vertices become those vertices again, its own vertices follow the mesh's. A
+// junction reads only the tubes and writes only its piece, so with many junctions meshers on
+// several threads take one junction at a time (a shrunk one takes far longer than a plain
+// hull), each running its rays on its own thread; with few, one mesher shares every shrunk
+// junction's rays among the cores. The mesh is the same either way.
+void WeldBuilder::meshJunctions() {
+    const std::vector<NodeId>& clusters = junctions_.junctions;
+    if (clusters.empty()) return;
+    const std::size_t threads = workersFor(clusters.size(), cores_);
+    std::deque<CoreTeam> teams;  // one thread each
+    std::deque<JunctionMesher> meshers;
+    for (std::size_t w = 0; w < threads; ++w) {
+        CoreTeam& team = threads == 1 ? team_ : teams.emplace_back(1);
+        meshers.emplace_back(*this, mesh_, windOut_, team);
+    }
+    std::vector<JunctionMesher::Piece> pieces(clusters.size());
+    std::vector<std::uint32_t> pieceMesher(clusters.size(), 0);
+    forEachOnThreads(
+        clusters.size(), threads,
+        [&](std::size_t j, std::size_t w) {
+            pieces[j] = meshers[w].meshJunction(clusters[j]);
+            pieceMesher[j] = static_cast<std::uint32_t>(w);
+        },
+        1);
+
+    std::size_t vertices = mesh_.positions.size();
+    std::size_t indices = mesh_.indices.size();
+    for (const JunctionMesher::Piece& piece : pieces) {
+        vertices += piece.endVertex - piece.firstVertex - piece.copied;
+        indices += piece.endIndex - piece.firstIndex;
+    }
+    mesh_.positions.reserve(vertices);
+    mesh_.normals.reserve(vertices);
+    mesh_.tangents.reserve(vertices);
+    mesh_.uvs.reserve(vertices);
+    mesh_.indices.reserve(indices);
+    for (std::size_t j = 0; j < clusters.size(); ++j) {
+        const JunctionMesher& mesher = meshers[pieceMesher[j]];
+        const JunctionMesher::Piece& piece = pieces[j];
+        const Mesh& from = mesher.mesh();
+        const std::uint32_t own = piece.firstVertex + piece.copied;  // its first own vertex
+        const auto base = static_cast<std::uint32_t>(mesh_.positions.size());
+        appendVertices(mesh_, from, own, piece.endVertex - own);
+        if (params_.tube.windAttributes) {
+            windOut_.appendFrom(mesher.windOut(), own, piece.endVertex - own);
+        }
+        const std::uint32_t* tubeVertex = mesher.tubeVertices().data() + piece.firstCopy;
+        for (std::size_t i = piece.firstIndex; i < piece.endIndex; ++i) {
+            const std::uint32_t v = from.indices[i];
+            RAMUS_ASSERT(v >= piece.firstVertex && v < piece.endVertex);
+            mesh_.indices.push_back(v < own ? tubeVertex[v - piece.firstVertex] : base + (v - own));
+        }
+    }
+    for (const JunctionMesher& mesher : meshers) {
+        const WeldReport& r = mesher.report();
+        report_.fallbacks += r.fallbacks;
+        report_.absorbedTubes += r.absorbedTubes;
+        report_.nodeBalls += r.nodeBalls;
+        report_.bendRings += r.bendRings;
+        report_.refinedJunctions += r.refinedJunctions;
+        report_.tubedForUnion += r.tubedForUnion;
     }
 }
 
@@ -396,7 +436,7 @@ Mesh WeldBuilder::build(WeldReport* report) {
         discFirst_[l + 1] = static_cast<std::uint32_t>(discs_.size());
     }
     const std::size_t tubeIndices = mesh_.indices.size();
-    for (NodeId cluster : junctions_.junctions) meshJunction(cluster);
+    meshJunctions();
     report_.junctionTriangles = (mesh_.indices.size() - tubeIndices) / 3;
     if (params_.tube.windAttributes) {
         RAMUS_ASSERT(windOut_.vertexCount() == mesh_.positions.size());
