@@ -57,6 +57,7 @@ struct WindAttributes {
     std::vector<float> wind, pivot, leaf;
 
     void resize(std::size_t vertexCount);
+    void reserve(std::size_t vertexCount);
     /// Vertices [first, first + count) get `sample` and the leaf pair (leafPhase, flutter).
     void set(std::size_t first, std::size_t count, const WindSample& sample, float leafPhase = 0.0f,
              float flutter = 0.0f);

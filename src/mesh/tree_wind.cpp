@@ -103,6 +103,12 @@ void WindAttributes::set(std::size_t first, std::size_t count, const WindSample&
     }
 }
 
+void WindAttributes::reserve(std::size_t vertexCount) {
+    wind.reserve(4 * vertexCount);
+    pivot.reserve(3 * vertexCount);
+    leaf.reserve(2 * vertexCount);
+}
+
 void WindAttributes::append(std::size_t count, const WindSample& s) {
     const std::size_t first = vertexCount();
     resize(first + count);

@@ -196,6 +196,8 @@ public:
     JunctionMesher(WeldBuilder& builder, const Mesh& tubes, const WindAttributes& tubeWind,
                    CoreTeam& team);
     Piece meshJunction(NodeId cluster);
+    /// Room in mesh_ for this many vertices and indices.
+    void reserve(std::size_t vertices, std::size_t indices);
     const Mesh& mesh() const { return mesh_; }
     const WindAttributes& windOut() const { return windOut_; }
     /// Per copied vertex, in the order of the pieces: its number in the tubes' mesh.

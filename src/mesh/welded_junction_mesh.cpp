@@ -50,6 +50,15 @@ JunctionMesher::JunctionMesher(WeldBuilder& builder, const Mesh& tubes,
       tubeWind_(tubeWind),
       team_(team) {}
 
+void JunctionMesher::reserve(std::size_t vertices, std::size_t indices) {
+    mesh_.positions.reserve(vertices);
+    mesh_.normals.reserve(vertices);
+    mesh_.tangents.reserve(vertices);
+    mesh_.uvs.reserve(vertices);
+    mesh_.indices.reserve(indices);
+    if (params_.tube.windAttributes) windOut_.reserve(vertices);
+}
+
 void appendVertices(Mesh& to, const Mesh& from, std::size_t first, std::size_t count) {
     auto copy = [&](auto& into, const auto& values) {
         const auto begin = values.begin() + static_cast<std::ptrdiff_t>(first);

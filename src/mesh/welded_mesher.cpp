@@ -347,10 +347,18 @@ void WeldBuilder::meshJunctions() {
     if (clusters.empty()) return;
     const std::size_t threads = workersFor(clusters.size(), cores_);
     std::deque<CoreTeam> teams;  // one thread each
+    // The tube rings the junctions copy; their hulls have about two triangles a ring vertex.
+    std::size_t ringVertices = 0;
+    for (const std::vector<RingRecord>* rings : {&startRing_, &endRing_, &discs_, &before_}) {
+        for (const RingRecord& ring : *rings) {
+            if (ring.n > 0) ringVertices += static_cast<std::size_t>(ring.n) + 1;
+        }
+    }
     std::deque<JunctionMesher> meshers;
     for (std::size_t w = 0; w < threads; ++w) {
         CoreTeam& team = threads == 1 ? team_ : teams.emplace_back(1);
-        meshers.emplace_back(*this, mesh_, windOut_, team);
+        meshers.emplace_back(*this, mesh_, windOut_, team)
+            .reserve(ringVertices / threads, 6 * ringVertices / threads);
     }
     std::vector<JunctionMesher::Piece> pieces(clusters.size());
     std::vector<std::uint32_t> pieceMesher(clusters.size(), 0);
