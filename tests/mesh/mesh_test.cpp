@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "same_mesh.hpp"
+
 namespace ramus {
 namespace {
 
@@ -87,36 +89,6 @@ TEST(AppendMesh, AppendingAnEmptyMeshChangesNothing) {
     EXPECT_EQ(a.attributes[0].values.size(), 12u);
 }
 
-// Every field of two meshes, compared one by one (Mesh has no operator==).
-void expectSameMesh(const Mesh& a, const Mesh& b, const std::string& label) {
-    SCOPED_TRACE(label);
-    EXPECT_EQ(a.name, b.name);
-    EXPECT_EQ(a.positions, b.positions);
-    EXPECT_EQ(a.normals, b.normals);
-    EXPECT_EQ(a.tangents, b.tangents);
-    EXPECT_EQ(a.uvs, b.uvs);
-    EXPECT_EQ(a.joints, b.joints);
-    EXPECT_EQ(a.weights, b.weights);
-    ASSERT_EQ(a.attributes.size(), b.attributes.size());
-    for (std::size_t i = 0; i < a.attributes.size(); ++i) {
-        EXPECT_EQ(a.attributes[i].name, b.attributes[i].name);
-        EXPECT_EQ(a.attributes[i].components, b.attributes[i].components);
-        EXPECT_EQ(a.attributes[i].values, b.attributes[i].values);
-    }
-    EXPECT_EQ(a.indices, b.indices);
-    ASSERT_EQ(a.primitives.size(), b.primitives.size());
-    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
-        EXPECT_EQ(a.primitives[i].firstIndex, b.primitives[i].firstIndex);
-        EXPECT_EQ(a.primitives[i].indexCount, b.primitives[i].indexCount);
-        EXPECT_EQ(a.primitives[i].material, b.primitives[i].material);
-        EXPECT_EQ(a.primitives[i].name, b.primitives[i].name);
-    }
-    ASSERT_EQ(a.materials.size(), b.materials.size());
-    for (std::size_t i = 0; i < a.materials.size(); ++i) {
-        EXPECT_TRUE(sameMaterial(a.materials[i], b.materials[i]));
-    }
-}
-
 // Appending a mesh that is dropped afterwards (Mesh&&: its arrays are taken where the target
 // has none) gives the same mesh as appending a copy, on every combination of an empty or drawn
 // target, with or without materials, attributes, custom attributes and skins.
@@ -142,7 +114,7 @@ TEST(AppendMesh, TakingAMeshGivesTheSameAsCopyingIt) {
             appendMesh(copied, other);
             Mesh taken = target;
             appendMesh(taken, Mesh(other));
-            expectSameMesh(taken, copied, otherName + " appended to " + targetName);
+            test::expectSameMesh(taken, copied, otherName + " appended to " + targetName);
         }
     }
     // The arrays are taken, not copied, where the target has none.

@@ -5,23 +5,11 @@
 #include <string>
 
 #include "mesh/welded_builder.hpp"
+#include "same_mesh.hpp"
 #include "welded_checks.hpp"
 
 namespace ramus {
 namespace {
-
-void expectSameMesh(const Mesh& a, const Mesh& b) {
-    EXPECT_EQ(a.positions, b.positions);
-    EXPECT_EQ(a.normals, b.normals);
-    EXPECT_EQ(a.tangents, b.tangents);
-    EXPECT_EQ(a.uvs, b.uvs);
-    EXPECT_EQ(a.indices, b.indices);
-    ASSERT_EQ(a.attributes.size(), b.attributes.size());
-    for (std::size_t i = 0; i < a.attributes.size(); ++i) {
-        EXPECT_EQ(a.attributes[i].name, b.attributes[i].name);
-        EXPECT_EQ(a.attributes[i].values, b.attributes[i].values);
-    }
-}
 
 // ABOP 1.27 has fallback junctions (their tubes), shrunk ones (new vertices) and crossings;
 // 2.8a many shrunk junctions and limbs absorbed into them. Both have enough junctions for
@@ -44,7 +32,7 @@ TEST(WeldedThreads, JunctionsOnOneOrSeveralThreadsGiveTheSameMesh) {
         EXPECT_EQ(one.nodeBalls, three.nodeBalls);
         EXPECT_EQ(one.bendRings, three.bendRings);
         EXPECT_EQ(one.junctionTriangles, three.junctionTriangles);
-        expectSameMesh(alone, shared);
+        test::expectSameMesh(alone, shared, name);
     }
 }
 
