@@ -177,19 +177,21 @@ private:
 };
 
 /// Meshes junctions one at a time, each into a piece of its own mesh_ after the pieces of the
-/// junctions before: the vertices of the tube rings it joins copied first (in the order of
-/// their vertex numbers in the tubes' mesh), then those it adds, then its triangles. Reads the
-/// builder's tubes and rings only, so several meshers run junctions on several threads; the
-/// builder appends the pieces in junction order (WeldBuilder::meshJunctions).
+/// junctions before. While a junction is meshed, the vertices of the tube rings it joins are
+/// copied into mesh_ first (in the order of their vertex numbers in the tubes' mesh), then come
+/// those it adds and its triangles; when it is done, the copies are dropped and its triangles
+/// name tube vertices by their numbers in the tubes' mesh and its own with kOwnVertex set.
+/// Reads the builder's tubes and rings only, so several meshers run junctions on several
+/// threads; the builder appends the pieces in junction order (WeldBuilder::meshJunctions).
 class JunctionMesher : WeldEmitter {
 public:
-    /// A junction's piece of mesh_.
+    /// In a piece's indices: the vertex is the piece's own (its number from the piece's first).
+    static constexpr std::uint32_t kOwnVertex = 0x80000000u;
+
+    /// A junction's piece of mesh_: its own vertices and its triangles.
     struct Piece {
-        std::uint32_t firstVertex = 0;  ///< its first copied tube vertex
-        std::uint32_t copied = 0;       ///< tube vertices copied (then those it added)
-        std::uint32_t endVertex = 0;
+        std::uint32_t firstVertex = 0, endVertex = 0;
         std::size_t firstIndex = 0, endIndex = 0;
-        std::size_t firstCopy = 0;  ///< into tubeVertices(): the copied vertices' numbers
     };
 
     /// `team` shares the rays of a shrunk junction.
@@ -200,8 +202,6 @@ public:
     void reserve(std::size_t vertices, std::size_t indices);
     const Mesh& mesh() const { return mesh_; }
     const WindAttributes& windOut() const { return windOut_; }
-    /// Per copied vertex, in the order of the pieces: its number in the tubes' mesh.
-    const std::vector<std::uint32_t>& tubeVertices() const { return tubeVertices_; }
     /// The junction counters of every junction meshed (fallbacks, balls, bends, shrunk, tubed).
     const WeldReport& report() const { return report_; }
 
@@ -227,6 +227,7 @@ private:
     void gatherJunction(NodeId cluster);
     void copyTubeRings();
     void closeJunction();
+    void eraseVertices(std::uint32_t first, std::uint32_t count);
     bool buildHull(std::size_t firstRing = 0);
     bool holesAreRings();
     void emitHull();
@@ -268,7 +269,7 @@ private:
     CoreTeam& team_;
 
     WeldReport report_;
-    std::vector<std::uint32_t> tubeVertices_;  // see tubeVertices()
+    std::vector<std::uint32_t> tubeVertices_;  // per vertex copied: its number in the tubes'
 
     // Junction scratch, reused.
     std::vector<HullRing> hullRings_;

@@ -26,6 +26,7 @@
 #include <limits>
 
 #include "fixed_hash.hpp"
+#include "ramus/error.hpp"
 #include "welded_builder.hpp"
 
 namespace ramus::detail {
@@ -528,16 +529,43 @@ JunctionMesher::Piece JunctionMesher::meshJunction(NodeId cluster) {
     Piece piece;
     piece.firstVertex = static_cast<std::uint32_t>(mesh_.positions.size());
     piece.firstIndex = mesh_.indices.size();
-    piece.firstCopy = tubeVertices_.size();
+    tubeVertices_.clear();
     gatherJunction(cluster);
     if (!hullRings_.empty()) {
         copyTubeRings();
-        piece.copied = static_cast<std::uint32_t>(tubeVertices_.size() - piece.firstCopy);
         closeJunction();
     }
+    // The copies go (only the tubes' own vertices are kept), so a mesher holds no more than
+    // the junctions' own vertices: on the synthetic trees nearly every tube vertex is on a
+    // junction's ring.
+    const auto copied = static_cast<std::uint32_t>(tubeVertices_.size());
+    const std::uint32_t own = piece.firstVertex + copied;
+    for (std::size_t i = piece.firstIndex; i < mesh_.indices.size(); ++i) {
+        std::uint32_t& v = mesh_.indices[i];
+        RAMUS_ASSERT(v >= piece.firstVertex && v < mesh_.positions.size());
+        v = v < own ? tubeVertices_[v - piece.firstVertex] : kOwnVertex | (v - own);
+    }
+    eraseVertices(piece.firstVertex, copied);
     piece.endVertex = static_cast<std::uint32_t>(mesh_.positions.size());
     piece.endIndex = mesh_.indices.size();
     return piece;
+}
+
+// Removes vertices [first, first + count) of mesh_ (and their wind values).
+void JunctionMesher::eraseVertices(std::uint32_t first, std::uint32_t count) {
+    auto erase = [&](auto& values, std::size_t width) {
+        const auto begin = values.begin() + static_cast<std::ptrdiff_t>(first * width);
+        values.erase(begin, begin + static_cast<std::ptrdiff_t>(count * width));
+    };
+    erase(mesh_.positions, 1);
+    erase(mesh_.normals, 1);
+    erase(mesh_.tangents, 1);
+    erase(mesh_.uvs, 1);
+    if (params_.tube.windAttributes) {
+        erase(windOut_.wind, 4);
+        erase(windOut_.pivot, 3);
+        erase(windOut_.leaf, 2);
+    }
 }
 
 // The junction gathered: its hull with the arms' discs cut out (shrunk onto the branches with

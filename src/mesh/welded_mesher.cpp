@@ -373,7 +373,7 @@ void WeldBuilder::meshJunctions() {
     std::size_t vertices = mesh_.positions.size();
     std::size_t indices = mesh_.indices.size();
     for (const JunctionMesher::Piece& piece : pieces) {
-        vertices += piece.endVertex - piece.firstVertex - piece.copied;
+        vertices += piece.endVertex - piece.firstVertex;
         indices += piece.endIndex - piece.firstIndex;
     }
     mesh_.positions.reserve(vertices);
@@ -381,21 +381,20 @@ void WeldBuilder::meshJunctions() {
     mesh_.tangents.reserve(vertices);
     mesh_.uvs.reserve(vertices);
     mesh_.indices.reserve(indices);
+    constexpr std::uint32_t kOwn = JunctionMesher::kOwnVertex;
     for (std::size_t j = 0; j < clusters.size(); ++j) {
         const JunctionMesher& mesher = meshers[pieceMesher[j]];
         const JunctionMesher::Piece& piece = pieces[j];
         const Mesh& from = mesher.mesh();
-        const std::uint32_t own = piece.firstVertex + piece.copied;  // its first own vertex
         const auto base = static_cast<std::uint32_t>(mesh_.positions.size());
-        appendVertices(mesh_, from, own, piece.endVertex - own);
+        const std::uint32_t count = piece.endVertex - piece.firstVertex;
+        appendVertices(mesh_, from, piece.firstVertex, count);
         if (params_.tube.windAttributes) {
-            windOut_.appendFrom(mesher.windOut(), own, piece.endVertex - own);
+            windOut_.appendFrom(mesher.windOut(), piece.firstVertex, count);
         }
-        const std::uint32_t* tubeVertex = mesher.tubeVertices().data() + piece.firstCopy;
         for (std::size_t i = piece.firstIndex; i < piece.endIndex; ++i) {
             const std::uint32_t v = from.indices[i];
-            RAMUS_ASSERT(v >= piece.firstVertex && v < piece.endVertex);
-            mesh_.indices.push_back(v < own ? tubeVertex[v - piece.firstVertex] : base + (v - own));
+            mesh_.indices.push_back((v & kOwn) != 0 ? base + (v & ~kOwn) : v);
         }
     }
     for (const JunctionMesher& mesher : meshers) {
