@@ -158,27 +158,39 @@ std::uint32_t appendVertexCopy(Mesh& to, const Mesh& from, std::uint32_t v) {
 }
 
 void removeUnusedVertices(Mesh& mesh) {
-    std::vector<std::uint32_t> remap(mesh.positions.size(), 0);
+    const std::size_t count = mesh.positions.size();
+    std::vector<std::uint32_t> remap(count, 0);
     for (std::uint32_t i : mesh.indices) remap[i] = 1;
-    std::uint32_t kept = 0;
-    auto move = [&](auto& values, std::size_t from, std::size_t to) {
-        if (!values.empty()) values[to] = values[from];
+    // Used vertices come in long runs (whole rings): each run is moved down array by array.
+    auto moveRun = [](auto& values, std::size_t width, std::size_t from, std::size_t to,
+                      std::size_t run) {
+        if (values.empty() || from == to) return;
+        const auto begin = values.begin() + static_cast<std::ptrdiff_t>(width * from);
+        std::copy(begin, begin + static_cast<std::ptrdiff_t>(width * run),
+                  values.begin() + static_cast<std::ptrdiff_t>(width * to));  // to < from
     };
-    for (std::size_t i = 0; i < remap.size(); ++i) {
-        if (remap[i] == 0) continue;
-        remap[i] = kept;
-        move(mesh.positions, i, kept);
-        move(mesh.normals, i, kept);
-        move(mesh.tangents, i, kept);
-        move(mesh.uvs, i, kept);
-        move(mesh.joints, i, kept);
-        move(mesh.weights, i, kept);
-        for (VertexAttribute& a : mesh.attributes) {
-            const auto width = static_cast<std::size_t>(a.components);
-            std::copy_n(a.values.begin() + static_cast<std::ptrdiff_t>(width * i), width,
-                        a.values.begin() + static_cast<std::ptrdiff_t>(width * kept));
+    std::uint32_t kept = 0;
+    for (std::size_t i = 0; i < count;) {
+        if (remap[i] == 0) {
+            ++i;
+            continue;
         }
-        ++kept;
+        std::size_t end = i;
+        for (; end < count && remap[end] != 0; ++end) {
+            remap[end] = kept + static_cast<std::uint32_t>(end - i);
+        }
+        const std::size_t run = end - i;
+        moveRun(mesh.positions, 1, i, kept, run);
+        moveRun(mesh.normals, 1, i, kept, run);
+        moveRun(mesh.tangents, 1, i, kept, run);
+        moveRun(mesh.uvs, 1, i, kept, run);
+        moveRun(mesh.joints, 1, i, kept, run);
+        moveRun(mesh.weights, 1, i, kept, run);
+        for (VertexAttribute& a : mesh.attributes) {
+            moveRun(a.values, static_cast<std::size_t>(a.components), i, kept, run);
+        }
+        kept += static_cast<std::uint32_t>(run);
+        i = end;
     }
     for (std::uint32_t& i : mesh.indices) i = remap[i];
     auto shrink = [&](auto& values) {

@@ -144,5 +144,30 @@ TEST(RemoveUnusedVertices, KeepsUsedVerticesInOrderWithAllTheirArrays) {
     EXPECT_EQ(mesh.attributes[0].values, (std::vector<float>{2, 3, 8, 9, 10, 11}));
 }
 
+// Runs of used vertices move down over the unused ones, overlapping where a run is longer than
+// the gap before it.
+TEST(RemoveUnusedVertices, MovesLongRunsOverShortGaps) {
+    Mesh mesh;
+    std::vector<float> values;
+    for (int i = 0; i < 10; ++i) {
+        mesh.positions.emplace_back(static_cast<float>(i), 0.0f, 0.0f);
+        mesh.uvs.emplace_back(static_cast<float>(i), 1.0f);
+        values.insert(values.end(), {static_cast<float>(i), -static_cast<float>(i)});
+    }
+    mesh.attributes.push_back({"_X", 2, values});
+    mesh.indices = {0, 1, 3, 4, 5, 6, 8, 9, 9};  // vertices 2 and 7 unused
+    removeUnusedVertices(mesh);
+    const std::vector<float> kept = {0, 1, 3, 4, 5, 6, 8, 9};
+    ASSERT_EQ(mesh.vertexCount(), kept.size());
+    EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7, 7}));
+    EXPECT_TRUE(mesh.normals.empty());
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        EXPECT_EQ(mesh.positions[i], Vec3f(kept[i], 0, 0));
+        EXPECT_EQ(mesh.uvs[i], Vec2f(kept[i], 1));
+        EXPECT_EQ(mesh.attributes[0].values[2 * i], kept[i]);
+        EXPECT_EQ(mesh.attributes[0].values[2 * i + 1], -kept[i]);
+    }
+}
+
 }  // namespace
 }  // namespace ramus
