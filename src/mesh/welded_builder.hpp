@@ -186,6 +186,8 @@ private:
 class JunctionMesher : WeldEmitter {
 public:
     /// In a piece's indices: the vertex is the piece's own (its number from the piece's first).
+    /// Tube vertex numbers stay below it: 2³¹ vertices of 48 bytes would be 100 GiB, far
+    /// beyond the node limits (docs/cli.md, "Limits").
     static constexpr std::uint32_t kOwnVertex = 0x80000000u;
 
     /// A junction's piece of mesh_: its own vertices and its triangles.

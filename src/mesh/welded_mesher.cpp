@@ -345,6 +345,7 @@ void WeldEmitter::emitCap(const RingRecord& ring, const Vec3& normal, bool tip,
 void WeldBuilder::meshJunctions() {
     const std::vector<NodeId>& clusters = junctions_.junctions;
     if (clusters.empty()) return;
+    RAMUS_ASSERT(mesh_.positions.size() < JunctionMesher::kOwnVertex);
     const std::size_t threads = workersFor(clusters.size(), cores_);
     std::deque<CoreTeam> teams;  // one thread each
     // The tube rings the junctions copy; their hulls have about two triangles a ring vertex.
