@@ -210,13 +210,14 @@ void WeldBuilder::emitPointsBeforeRings(std::int32_t l) {
 // the steps of vAfterStep between them (v falls along the limb).
 double WeldBuilder::vFromNode(const WeldLimb& limb, bool fromEnd, std::uint32_t k, double v) const {
     if (!fromEnd) {
-        for (std::uint32_t i = 1; i <= k; ++i)
+        for (std::uint32_t i = 1; i <= k; ++i) {
             v = vAfterStep(skeleton_, vScale_, limb.first + i, v);
+        }
         return v;
     }
     for (std::uint32_t i = limb.count - 1; i > k; --i) {
-        v += v - vAfterStep(skeleton_, vScale_, limb.first + i,
-                            v);  // towards the start v rises by the same steps
+        // Towards the start v rises by the same steps.
+        v += v - vAfterStep(skeleton_, vScale_, limb.first + i, v);
     }
     return v;
 }
@@ -348,7 +349,9 @@ void WeldBuilder::meshJunctions() {
     RAMUS_ASSERT(mesh_.positions.size() < JunctionMesher::kOwnVertex);
     const std::size_t threads = workersFor(clusters.size(), cores_);
     std::deque<CoreTeam> teams;  // one thread each
-    // The tube rings the junctions copy; their hulls have about two triangles a ring vertex.
+    // Room in each mesher for a share of the tube rings the junctions join: the copies go
+    // when a junction is done, but what the junctions add fits in their place (measured: less
+    // is slower on tree_3d and 1.24a); the hulls have about two triangles a ring vertex.
     std::size_t ringVertices = 0;
     for (const std::vector<RingRecord>* rings : {&startRing_, &endRing_, &discs_, &before_}) {
         for (const RingRecord& ring : *rings) {
