@@ -3,12 +3,15 @@
 // the enclosed volume stays within 1 % (only overlaps counted twice are lost).
 #include "ramus/solid_union.hpp"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,85 @@ namespace {
 
 BranchTree growExample(const std::string& name, int derivations) {
     return test::growLSystem(RAMUS_SOURCE_DIR "/examples/lsystems/" + name + ".lsys", derivations);
+}
+
+// Pairs of neighbouring triangles (sharing one or two vertex positions) that fold through each
+// other beside what they share, by exact predicates, as CGAL's self-intersection test tells
+// neighbours apart: the edge opposite the one shared corner of either meets the other, or two
+// that share an edge lie in one plane on one side of it. countSelfIntersections leaves out
+// every pair that shares a position.
+std::size_t countFoldedNeighbours(const Mesh& mesh) {
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::map<std::array<float, 3>, std::uint32_t> ids;
+    std::vector<std::uint32_t> id(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const Vec3f& p = mesh.positions[v];
+        id[v] = ids.emplace(std::array<float, 3>{p.x(), p.y(), p.z()},
+                            static_cast<std::uint32_t>(ids.size()))
+                    .first->second;
+    }
+    std::vector<std::vector<std::uint32_t>> around(ids.size());
+    const auto triangles = static_cast<std::uint32_t>(mesh.triangleCount());
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        for (int k = 0; k < 3; ++k) around[id[mesh.indices[3 * t + k]]].push_back(t);
+    }
+    auto point = [&](std::uint32_t t, int k) {
+        const Vec3f& p = mesh.positions[mesh.indices[3 * t + (k % 3)]];
+        return Kernel::Point_3(p.x(), p.y(), p.z());
+    };
+    auto corner = [&](std::uint32_t t, int k) { return id[mesh.indices[3 * t + (k % 3)]]; };
+    std::size_t folded = 0;
+    for (std::uint32_t position = 0; position < around.size(); ++position) {
+        for (std::size_t i = 0; i < around[position].size(); ++i) {
+            for (std::size_t j = i + 1; j < around[position].size(); ++j) {
+                const std::uint32_t a = around[position][i], b = around[position][j];
+                std::vector<std::pair<int, int>> shared;  // corner of a, corner of b
+                for (int x = 0; x < 3; ++x) {
+                    for (int y = 0; y < 3; ++y) {
+                        if (corner(a, x) == corner(b, y)) shared.emplace_back(x, y);
+                    }
+                }
+                // Each pair once: where it shares its smallest position.
+                std::uint32_t first = corner(a, shared[0].first);
+                for (const auto& [x, y] : shared) first = std::min(first, corner(a, x));
+                if (first != position) continue;
+                if (shared.size() == 1) {
+                    const auto [x, y] = shared[0];
+                    const Kernel::Triangle_3 ta(point(a, 0), point(a, 1), point(a, 2));
+                    const Kernel::Triangle_3 tb(point(b, 0), point(b, 1), point(b, 2));
+                    if (CGAL::do_intersect(ta,
+                                           Kernel::Segment_3(point(b, y + 1), point(b, y + 2))) ||
+                        CGAL::do_intersect(tb,
+                                           Kernel::Segment_3(point(a, x + 1), point(a, x + 2)))) {
+                        ++folded;
+                    }
+                } else if (shared.size() == 2) {
+                    int ra = 3 - shared[0].first - shared[1].first;
+                    int rb = 3 - shared[0].second - shared[1].second;
+                    const auto p = point(a, ra + 1), q = point(a, ra + 2);
+                    if (CGAL::coplanar(p, q, point(a, ra), point(b, rb)) &&
+                        CGAL::coplanar_orientation(p, q, point(a, ra), point(b, rb)) ==
+                            CGAL::POSITIVE) {
+                        ++folded;
+                    }
+                }
+            }
+        }
+    }
+    return folded;
+}
+
+// Rounding the cut leaves a few neighbouring triangles that fold through each other beside a
+// shared corner, a few thousandths of a unit across; since session 35 the union counts them as
+// crossings and mends them (ABOP 2.7c kept two until then, 1.24b 22).
+TEST(SolidUnion, NeighboursDoNotFoldThroughEachOther) {
+    WeldedMeshParams params;
+    params.solidUnion = true;
+    WeldReport report;
+    const Mesh mesh = buildWeldedTreeMesh(growExample("abop_2_7c", -1), params, &report);
+    ASSERT_TRUE(report.solidUnion.applied) << report.solidUnion.failure;
+    EXPECT_EQ(report.solidUnion.defects(), 0u);
+    EXPECT_EQ(countFoldedNeighbours(mesh), 0u);
 }
 
 // tree_3d_tropism at 4 derivations: 15 junction–tube intersections without the union
@@ -182,23 +264,26 @@ TEST(SolidUnion, ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls) {
 }
 
 // The moves are tried in order until one leaves no defect; a re-union of a result that keeps
-// a few usually mends them first. ABOP 2.8c, a flat plant, whose first attempt kept defects
-// until session 31 (and whose larger moves, tilting its coplanar faces through more of each
-// other, were put off: SolidUnionReport::postponedMoves), is clean at its first move, with or
-// without re-unions; ABOP 1.24a, a dense plant, needs a re-union after its first move, or
-// without re-unions a second move (its moves cut within 1 % as many triangles: none is put
-// off). With make union-check (about 20 s in the Release build).
+// a few usually mends them first. Since session 35 neighbouring triangles that fold through
+// each other beside a shared corner count as crossings (a few per dense plant, from rounding
+// the cut): ABOP 2.8c, a flat plant, is clean after its first move and one re-union, or
+// without re-unions at its fourth move (a larger one, tilting its coplanar faces through more
+// of each other, put off: SolidUnionReport::postponedMoves); ABOP 1.24a, a dense plant, after
+// its first move and one re-union, and without re-unions keeps two such folds after all seven
+// moves: the re-union is what makes it clean. With make union-check (about 30 s in the
+// Release build).
 TEST(SolidUnion, MovesAreTriedInOrderUntilOneIsClean) {
     if (std::getenv("RAMUS_LARGE_TESTS") == nullptr) {
         GTEST_SKIP() << "set RAMUS_LARGE_TESTS=1 (make union-check)";
     }
     struct Case {
         const char* example;
-        std::size_t reunions, attempts, reunionsMade;
+        std::size_t reunions, attempts, postponed, reunionsMade, defects;
     };
     for (const Case& c :
-         {Case{"abop_2_8c", 0, 1, 0}, Case{"abop_2_8c", kSolidUnionReunions, 1, 0},
-          Case{"abop_1_24a", 0, 2, 0}, Case{"abop_1_24a", kSolidUnionReunions, 1, 1}}) {
+         {Case{"abop_2_8c", 0, 4, 1, 0, 0}, Case{"abop_2_8c", kSolidUnionReunions, 1, 0, 1, 0},
+          Case{"abop_1_24a", 0, kSolidUnionAttempts, 0, 0, 2},
+          Case{"abop_1_24a", kSolidUnionReunions, 1, 0, 1, 0}}) {
         SCOPED_TRACE(std::string(c.example) + " with " + std::to_string(c.reunions) + " re-unions");
         WeldedMeshParams params;
         params.solidUnion = true;
@@ -209,9 +294,9 @@ TEST(SolidUnion, MovesAreTriedInOrderUntilOneIsClean) {
         EXPECT_TRUE(u.applied) << u.failure;
         EXPECT_FALSE(report.convexForUnion);
         EXPECT_EQ(u.attempts, c.attempts);
-        EXPECT_EQ(u.postponedMoves, 0u);
+        EXPECT_EQ(u.postponedMoves, c.postponed);
         EXPECT_EQ(u.reunions, c.reunionsMade);
-        EXPECT_EQ(u.defects(), 0u);
+        EXPECT_EQ(u.defects(), c.defects);
         const test::Topology top = test::analyzeTopology(mesh);
         EXPECT_TRUE(top.closedOriented);
         EXPECT_EQ(top.nonManifoldVertices, 0u);
