@@ -1476,7 +1476,8 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
         triangleBoxes(mesh.triangleCount(), point, [](std::uint32_t) { return true; }), suspect,
         [&](std::uint32_t s, std::uint32_t t) {
             if (shareAPosition(s, t)) {
-                return neighbours(s, t) &&
+                return neighbours(s, t) && !triangle(s).is_degenerate() &&
+                       !triangle(t).is_degenerate() &&
                        trianglesIntersect(sheetPoints, &surfaces.fan[3 * std::size_t{s}],
                                           &surfaces.fan[3 * std::size_t{t}]);
             }
@@ -1498,7 +1499,8 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
     if (intersectingPairs(mesh, surfaces, every, everyPair)) {
         std::vector<detail::TrianglePair> reference;
         for (const auto& [s, t] : everyPair) {
-            if (!shareAPosition(s, t) || neighbours(s, t)) {
+            // (f, f): CGAL's report of a degenerate triangle, which is not tested here.
+            if (s != t && (!shareAPosition(s, t) || neighbours(s, t))) {
                 reference.emplace_back(std::min(s, t), std::max(s, t));
             }
         }
