@@ -1415,9 +1415,10 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
 }
 #endif
 
-// Pairs of triangles of the closed surfaces `mesh` that intersect and share no position (exact
-// predicates on the float positions, welded by position): what rounding the cut positions to
-// float left where surfaces only graze each other. In order. `surfaces`: surfacesOf(mesh),
+// Pairs of triangles of the closed surfaces `mesh` that intersect and share no position, or
+// are neighbours on one sheet that fold through each other beside what they share (since
+// session 35; exact predicates on the float positions, welded by position): what rounding the
+// cut positions to float left where surfaces only graze each other. In order. `surfaces`: surfacesOf(mesh),
 // closed (the result passed closedSurfaces). Triangles that are not `suspect` (input triangles
 // that crossed nothing, where they still are; after moves, those that neither moved nor crossed)
 // do not cross each other, so only pairs with a suspect are tested: the boxes of the suspects
