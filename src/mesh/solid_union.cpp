@@ -1418,13 +1418,13 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
 // Pairs of triangles of the closed surfaces `mesh` that intersect and share no position, or
 // are neighbours on one sheet that fold through each other beside what they share (since
 // session 35; exact predicates on the float positions, welded by position): what rounding the
-// cut positions to float left where surfaces only graze each other. In order. `surfaces`: surfacesOf(mesh),
-// closed (the result passed closedSurfaces). Triangles that are not `suspect` (input triangles
-// that crossed nothing, where they still are; after moves, those that neither moved nor crossed)
-// do not cross each other, so only pairs with a suspect are tested: the boxes of the suspects
-// against all boxes (detail::overlappingBoxes), then the exact triangle test, on two cores. An
-// empty `suspect` tests the whole mesh. Until session 29 the triangles near the suspects went
-// through CGAL's self-intersection test on a surface mesh of them (the same pairs on tree_3d,
+// cut positions to float left where surfaces only graze each other. In order. `surfaces`:
+// surfacesOf(mesh), closed (the result passed closedSurfaces). Triangles that are not `suspect`
+// (input triangles that crossed nothing, where they still are; after moves, those that neither
+// moved nor crossed) do not cross each other, so only pairs with a suspect are tested: the boxes of
+// the suspects against all boxes (detail::overlappingBoxes), then the exact triangle test, on two
+// cores. An empty `suspect` tests the whole mesh. Until session 29 the triangles near the suspects
+// went through CGAL's self-intersection test on a surface mesh of them (the same pairs on tree_3d,
 // ABOP 1.24a and 2.8c), which builds that mesh and tests every pair of boxes, most of them
 // neighbours that share a corner; about 5–10 % of tree_3d's union in paired runs.
 std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces& surfaces,
