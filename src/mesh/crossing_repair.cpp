@@ -15,6 +15,7 @@
 
 #include "box_tree.hpp"
 #include "position_bits.hpp"
+#include "triangle_pairs.hpp"
 
 namespace ramus::detail {
 namespace {
@@ -43,7 +44,6 @@ private:
     Triangle triangle(std::uint32_t t) const;
     Vec3 normal(std::uint32_t t) const;  // not normalized
     bool degenerate(std::uint32_t t) const;
-    bool sharePosition(std::uint32_t f, std::uint32_t g) const;
     bool cross(std::uint32_t f, std::uint32_t g) const;
     std::size_t crossingsAround(std::uint32_t v, std::vector<TrianglePair>* pairs = nullptr);
     bool turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const;
@@ -109,19 +109,19 @@ bool Separator::degenerate(std::uint32_t t) const {
                            pointOf(s_.points[v[2]]));
 }
 
-bool Separator::sharePosition(std::uint32_t f, std::uint32_t g) const {
-    for (std::uint32_t a : s_.triangles[f]) {
-        for (std::uint32_t b : s_.triangles[g]) {
-            if (s_.points[a] == s_.points[b]) return true;
-        }
-    }
-    return false;
-}
-
-// As the solid union counts crossings: triangles that share no position and intersect (exact).
+// As the solid union counts crossings (detail::trianglesCross): triangles that share no
+// position and intersect, and neighbours on one sheet that fold through each other beside what
+// they share (since session 36: before, the repair passed over such folds, which only a new
+// union could mend, while the union counted them since session 35).
 bool Separator::cross(std::uint32_t f, std::uint32_t g) const {
-    if (sharePosition(f, g) || degenerate(f) || degenerate(g)) return false;
-    return CGAL::do_intersect(triangle(f), triangle(g));
+    const auto& a = s_.triangles[f];
+    const auto& b = s_.triangles[g];
+    return trianglesCross([&](std::uint32_t v) { return pointOf(s_.points[v]); }, a.data(),
+                          b.data(),
+                          [&](int i, int j) {
+                              return s_.points[a[static_cast<std::size_t>(i)]] ==
+                                     s_.points[b[static_cast<std::size_t>(j)]];
+                          });
 }
 
 // Crossing pairs with one of v's triangles (appended to `pairs` when given). Every vertex stays

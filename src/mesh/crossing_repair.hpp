@@ -39,8 +39,10 @@ struct CrossingRepair {
         0;  ///< of the given pairs and those moves made, the ones still crossing
 };
 
-/// Moves corners of the crossing pairs `crossing` (triangles that intersect and share no
-/// position, exact predicates on the float positions) by at most `maxMove` each, in float
+/// Moves corners of the crossing pairs `crossing` (as the solid union counts them,
+/// trianglesCross in triangle_pairs.hpp: triangles that intersect and share no position, and
+/// neighbours that fold through each other; exact predicates on the float positions) by at most
+/// `maxMove` each, in float
 /// steps, so that they no longer cross. A move is made only where it lowers the number of
 /// crossings the vertex's triangles take part in (against every triangle of the surface) and
 /// turns none of them over; moves are tried smallest first, along the vertex normal and along

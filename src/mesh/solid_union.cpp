@@ -76,6 +76,7 @@
 #include "index_hash_table.hpp"
 #include "on_cores.hpp"
 #include "position_bits.hpp"
+#include "triangle_pairs.hpp"
 #include "triangle_refinement.hpp"
 
 namespace ramus {
@@ -342,74 +343,6 @@ std::vector<detail::TrianglePair> overlappingPairsWhere(const std::vector<detail
     return pairs;
 }
 
-// Whether the points `others` all lie strictly on one side of the plane through p, q, r (exact;
-// never where those are on a line).
-bool strictlyOnOneSide(const Point& p, const Point& q, const Point& r,
-                       std::initializer_list<const Point*> others) {
-    CGAL::Orientation first = CGAL::COPLANAR;
-    for (const Point* x : others) {
-        const CGAL::Orientation o = CGAL::orientation(p, q, r, *x);
-        if (o == CGAL::COPLANAR || (first != CGAL::COPLANAR && o != first)) return false;
-        first = o;
-    }
-    return true;
-}
-
-// Whether the triangles a and b (surface vertices, at `points`) of closed surfaces intersect
-// other than in the corners or the edge they share: as CGAL's self-intersection test
-// (do_faces_intersect in Polygon_mesh_processing/self_intersections.h), triangles that share an
-// edge intersect where they fold onto each other (coplanar, on one side of it), triangles that
-// share one corner where the edge opposite it in one meets the other.
-bool trianglesIntersect(const std::vector<Point>& points, const std::uint32_t* a,
-                        const std::uint32_t* b) {
-    int shared = 0, sharedInA = 0, sharedInB = 0;
-    std::array<bool, 3> aShares{}, bShares{};
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            if (a[i] != b[j]) continue;
-            ++shared;
-            aShares[static_cast<std::size_t>(i)] = bShares[static_cast<std::size_t>(j)] = true;
-            sharedInA = i;
-            sharedInB = j;
-        }
-    }
-    auto point = [&](const std::uint32_t* t, int k) -> const Point& { return points[t[k % 3]]; };
-    if (shared == 3) return true;  // two triangles on the same corners lie on each other
-    if (shared == 2) {
-        auto unshared = [](const std::array<bool, 3>& shares) {
-            return static_cast<int>(std::find(shares.begin(), shares.end(), false) -
-                                    shares.begin());
-        };
-        const int ra = unshared(aShares), rb = unshared(bShares);
-        const Point& p = point(a, ra + 1);
-        const Point& q = point(a, ra + 2);
-        return CGAL::coplanar(p, q, point(a, ra), point(b, rb)) &&
-               CGAL::coplanar_orientation(p, q, point(a, ra), point(b, rb)) == CGAL::POSITIVE;
-    }
-    // Where the corners of one triangle that it does not share lie strictly on one side of the
-    // other's plane, the two do not meet beyond what they share: most neighbouring pairs are
-    // told apart so before CGAL's tests build their objects (tree_3d: 1.46 M of the 1.76 M
-    // pairs of overlapping boxes share a corner or an edge).
-    auto oneSide = [&](const std::uint32_t* t, std::initializer_list<const Point*> others) {
-        return strictlyOnOneSide(point(t, 0), point(t, 1), point(t, 2), others);
-    };
-    if (shared == 1) {  // apart where either's far edge misses the other's plane
-        const Point &b1 = point(b, sharedInB + 1), &b2 = point(b, sharedInB + 2);
-        const Point &a1 = point(a, sharedInA + 1), &a2 = point(a, sharedInA + 2);
-        if (oneSide(a, {&b1, &b2}) || oneSide(b, {&a1, &a2})) return false;
-        const Triangle ta(point(a, 0), point(a, 1), point(a, 2));
-        const Triangle tb(point(b, 0), point(b, 1), point(b, 2));
-        return CGAL::do_intersect(ta, Kernel::Segment_3(b1, b2)) ||
-               CGAL::do_intersect(tb, Kernel::Segment_3(a1, a2));
-    }
-    if (oneSide(a, {&point(b, 0), &point(b, 1), &point(b, 2)}) ||
-        oneSide(b, {&point(a, 0), &point(a, 1), &point(a, 2)})) {
-        return false;
-    }
-    return CGAL::do_intersect(Triangle(point(a, 0), point(a, 1), point(a, 2)),
-                              Triangle(point(b, 0), point(b, 1), point(b, 2)));
-}
-
 // The triangles of closed surfaces (corners: the surface vertices `fan`, at `points`) that the
 // refinement has to cut: per triangle whether it is degenerate (corners on a line) or
 // intersects another triangle other than in the corners or edge they share
@@ -434,7 +367,9 @@ Intersections intersectingTriangles(const std::vector<Point>& points,
     found.pairs = overlappingPairsWhere(
         triangleBoxes(triangles, point, [&](std::uint32_t t) { return !found.cut[t]; }), {},
         [&](std::uint32_t s, std::uint32_t t) {
-            return trianglesIntersect(points, &fan[3 * std::size_t{s}], &fan[3 * std::size_t{t}]);
+            return detail::trianglesIntersect(
+                [&](std::uint32_t v) -> const Point& { return points[v]; },
+                &fan[3 * std::size_t{s}], &fan[3 * std::size_t{t}]);
         });
     for (const auto& [s, t] : found.pairs) found.cut[s] = found.cut[t] = 1;
     return found;
@@ -1417,7 +1352,8 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
 
 // Pairs of triangles of the closed surfaces `mesh` that intersect and share no position, or
 // are neighbours on one sheet that fold through each other beside what they share (since
-// session 35; exact predicates on the float positions, welded by position): what rounding the
+// session 35; detail::trianglesCross, exact predicates on the float positions, welded by
+// position, also what the crossing repair counts since session 36): what rounding the
 // cut positions to float left where surfaces only graze each other. In order. `surfaces`:
 // surfacesOf(mesh), closed (the result passed closedSurfaces). Triangles that are not `suspect`
 // (input triangles that crossed nothing, where they still are; after moves, those that neither
@@ -1430,64 +1366,25 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
 std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces& surfaces,
                                                 const std::vector<char>& suspect) {
     const std::vector<std::uint32_t>& weld = surfaces.weld;
-    auto corner = [&](std::uint32_t t, std::size_t k) -> const Vec3f& {
-        return mesh.positions[mesh.indices[3 * std::size_t{t} + k]];
-    };
-    auto shareAPosition = [&](std::uint32_t s, std::uint32_t t) {
-        const std::uint32_t* a = &mesh.indices[3 * std::size_t{s}];
-        const std::uint32_t* b = &mesh.indices[3 * std::size_t{t}];
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j) {
-                if (weld[a[i]] == weld[b[j]]) return true;
-            }
-        }
-        return false;
-    };
-    // Whether every position s and t share is one surface vertex of both: neighbours on one
-    // sheet (the others meet at touching points or pinched edges, counted apart).
-    auto neighbours = [&](std::uint32_t s, std::uint32_t t) {
-        for (std::size_t i = 0; i < 3; ++i) {
-            for (std::size_t j = 0; j < 3; ++j) {
-                const std::size_t a = 3 * std::size_t{s} + i, b = 3 * std::size_t{t} + j;
-                if (weld[mesh.indices[a]] == weld[mesh.indices[b]] &&
-                    surfaces.fan[a] != surfaces.fan[b]) {
-                    return false;
-                }
-            }
-        }
-        return true;
+    auto positionOf = [&](std::uint32_t t, int k) {
+        return weld[mesh.indices[3 * std::size_t{t} + static_cast<std::size_t>(k)]];
     };
     auto point = [&](std::uint32_t t, std::size_t k) {
-        const Vec3f& p = corner(t, k);
+        const Vec3f& p = mesh.positions[mesh.indices[3 * std::size_t{t} + k]];
         return Point(p.x(), p.y(), p.z());
-    };
-    auto triangle = [&](std::uint32_t t) {
-        return Triangle(point(t, 0), point(t, 1), point(t, 2));
     };
     std::vector<Point> sheetPoints(surfaces.vertices, Point(0, 0, 0));  // per surface vertex
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         const Vec3f& p = mesh.positions[mesh.indices[c]];
         sheetPoints[surfaces.fan[c]] = Point(p.x(), p.y(), p.z());
     }
-    // A degenerate triangle (corners on a line: rounding leaves a few) is not tested, as in
-    // CGAL's self-intersection test, which reports it alone. Neighbours cross where they fold
-    // through each other beside the corner or edge they share (trianglesIntersect): rounding
-    // the cut leaves a few, a few thousandths of a unit across (session 35).
     const std::vector<detail::TrianglePair> crossing = overlappingPairsWhere(
         triangleBoxes(mesh.triangleCount(), point, [](std::uint32_t) { return true; }), suspect,
         [&](std::uint32_t s, std::uint32_t t) {
-            if (shareAPosition(s, t)) {
-                return neighbours(s, t) && !triangle(s).is_degenerate() &&
-                       !triangle(t).is_degenerate() &&
-                       trianglesIntersect(sheetPoints, &surfaces.fan[3 * std::size_t{s}],
-                                          &surfaces.fan[3 * std::size_t{t}]);
-            }
-            const Triangle a = triangle(s), b = triangle(t);
-            if (strictlyOnOneSide(a[0], a[1], a[2], {&b[0], &b[1], &b[2]}) ||
-                strictlyOnOneSide(b[0], b[1], b[2], {&a[0], &a[1], &a[2]})) {
-                return false;
-            }
-            return !a.is_degenerate() && !b.is_degenerate() && CGAL::do_intersect(a, b);
+            return detail::trianglesCross(
+                [&](std::uint32_t v) -> const Point& { return sheetPoints[v]; },
+                &surfaces.fan[3 * std::size_t{s}], &surfaces.fan[3 * std::size_t{t}],
+                [&](int i, int j) { return positionOf(s, i) == positionOf(t, j); });
         });
 #if defined(RAMUS_ENABLE_ASSERTS)
     // The premise of the local search and the test itself, checked in the tests against CGAL's
@@ -1497,11 +1394,22 @@ std::vector<detail::TrianglePair> crossingPairs(const Mesh& mesh, const Surfaces
     std::vector<std::uint32_t> every(mesh.triangleCount());
     std::iota(every.begin(), every.end(), 0u);
     std::vector<detail::TrianglePair> everyPair;
+    auto sheetVertexOf = [&](std::uint32_t t, int k) {  // its surface vertex
+        return surfaces.fan[3 * std::size_t{t} + static_cast<std::size_t>(k)];
+    };
     if (intersectingPairs(mesh, surfaces, every, everyPair)) {
         std::vector<detail::TrianglePair> reference;
         for (const auto& [s, t] : everyPair) {
-            // (f, f): CGAL's report of a degenerate triangle, which is not tested here.
-            if (s != t && (!shareAPosition(s, t) || neighbours(s, t))) {
+            // (f, f): CGAL's report of a degenerate triangle, which is not tested here; pairs
+            // that share a position through different surface vertices are counted apart.
+            bool touching = false;
+            for (int i = 0; i < 3; ++i) {
+                for (int j = 0; j < 3; ++j) {
+                    touching = touching || (positionOf(s, i) == positionOf(t, j) &&
+                                            sheetVertexOf(s, i) != sheetVertexOf(t, j));
+                }
+            }
+            if (s != t && !touching) {
                 reference.emplace_back(std::min(s, t), std::max(s, t));
             }
         }
