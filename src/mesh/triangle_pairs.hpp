@@ -35,9 +35,13 @@ inline bool strictlyOnOneSide(const PairKernel::Point_3& p, const PairKernel::Po
 /// self-intersection test (do_faces_intersect in Polygon_mesh_processing/self_intersections.h),
 /// triangles that share an edge intersect where they fold onto each other (coplanar, on one
 /// side of it), triangles that share one corner where the edge opposite it in one meets the
-/// other.
+/// other. With `skipDegenerate`, a pair with a degenerate triangle (corners on a line) does not
+/// intersect: that is tested only where the pair could (CGAL's collinearity test has no static
+/// filter and cost more than the rest where most pairs are apart), and before CGAL's
+/// intersection tests, which do not take degenerate triangles.
 template <class PointOf>
-bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const std::uint32_t* b) {
+bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const std::uint32_t* b,
+                        bool skipDegenerate = false) {
     using Point = PairKernel::Point_3;
     using Triangle = PairKernel::Triangle_3;
     int shared = 0, sharedInA = 0, sharedInB = 0;
@@ -51,9 +55,13 @@ bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const st
             sharedInB = j;
         }
     }
-    if (shared == 3) return true;  // two triangles on the same corners lie on each other
     const std::array<Point, 3> pa{pointOf(a[0]), pointOf(a[1]), pointOf(a[2])};
     const std::array<Point, 3> pb{pointOf(b[0]), pointOf(b[1]), pointOf(b[2])};
+    auto degenerate = [&] {
+        return skipDegenerate &&
+               (CGAL::collinear(pa[0], pa[1], pa[2]) || CGAL::collinear(pb[0], pb[1], pb[2]));
+    };
+    if (shared == 3) return !degenerate();  // two triangles on the same corners lie on each other
     auto at = [](const std::array<Point, 3>& t, int k) -> const Point& {
         return t[static_cast<std::size_t>(k % 3)];
     };
@@ -66,7 +74,8 @@ bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const st
         const Point& p = at(pa, ra + 1);
         const Point& q = at(pa, ra + 2);
         return CGAL::coplanar(p, q, at(pa, ra), at(pb, rb)) &&
-               CGAL::coplanar_orientation(p, q, at(pa, ra), at(pb, rb)) == CGAL::POSITIVE;
+               CGAL::coplanar_orientation(p, q, at(pa, ra), at(pb, rb)) == CGAL::POSITIVE &&
+               !degenerate();
     }
     // Where the corners of one triangle that it does not share lie strictly on one side of the
     // other's plane, the two do not meet beyond what they share: most neighbouring pairs are
@@ -78,13 +87,14 @@ bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const st
     if (shared == 1) {  // apart where either's far edge misses the other's plane
         const Point &b1 = at(pb, sharedInB + 1), &b2 = at(pb, sharedInB + 2);
         const Point &a1 = at(pa, sharedInA + 1), &a2 = at(pa, sharedInA + 2);
-        if (oneSide(pa, {&b1, &b2}) || oneSide(pb, {&a1, &a2})) return false;
+        if (oneSide(pa, {&b1, &b2}) || oneSide(pb, {&a1, &a2}) || degenerate()) return false;
         const Triangle ta(pa[0], pa[1], pa[2]);
         const Triangle tb(pb[0], pb[1], pb[2]);
         return CGAL::do_intersect(ta, PairKernel::Segment_3(b1, b2)) ||
                CGAL::do_intersect(tb, PairKernel::Segment_3(a1, a2));
     }
-    if (oneSide(pa, {&pb[0], &pb[1], &pb[2]}) || oneSide(pb, {&pa[0], &pa[1], &pa[2]})) {
+    if (oneSide(pa, {&pb[0], &pb[1], &pb[2]}) || oneSide(pb, {&pa[0], &pa[1], &pa[2]}) ||
+        degenerate()) {
         return false;
     }
     return CGAL::do_intersect(Triangle(pa[0], pa[1], pa[2]), Triangle(pb[0], pb[1], pb[2]));
@@ -102,24 +112,14 @@ bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const st
 template <class PointOf, class SamePosition>
 bool trianglesCross(const PointOf& pointOf, const std::uint32_t* a, const std::uint32_t* b,
                     const SamePosition& samePosition) {
-    bool sharesAPosition = false;
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
-            if (!samePosition(i, j)) continue;
-            if (a[i] != b[j]) return false;  // touching: another sheet's vertex there
-            sharesAPosition = true;
+            if (samePosition(i, j) && a[i] != b[j]) return false;  // another sheet's vertex there
         }
     }
-    const PairKernel::Triangle_3 ta(pointOf(a[0]), pointOf(a[1]), pointOf(a[2]));
-    const PairKernel::Triangle_3 tb(pointOf(b[0]), pointOf(b[1]), pointOf(b[2]));
-    if (sharesAPosition) {
-        return !ta.is_degenerate() && !tb.is_degenerate() && trianglesIntersect(pointOf, a, b);
-    }
-    if (strictlyOnOneSide(ta[0], ta[1], ta[2], {&tb[0], &tb[1], &tb[2]}) ||
-        strictlyOnOneSide(tb[0], tb[1], tb[2], {&ta[0], &ta[1], &ta[2]})) {
-        return false;
-    }
-    return !ta.is_degenerate() && !tb.is_degenerate() && CGAL::do_intersect(ta, tb);
+    // Triangles that share no position share no surface vertex: trianglesIntersect tests them
+    // whole.
+    return trianglesIntersect(pointOf, a, b, true);
 }
 
 }  // namespace ramus::detail
