@@ -101,7 +101,7 @@ batch-check: build
 # each; Release build, a few minutes; make test runs ABOP 1.27 and two thin trees).
 union-check: build
 	cd $(BUILD) && RAMUS_LARGE_TESTS=1 ./ramus_tests_mesh \
-	  --gtest_filter='SolidUnion.EveryExampleIsOneCleanSurface:SolidUnion.ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls:SolidUnion.MovesAreTriedInOrderUntilOneIsClean'
+	  --gtest_filter='SolidUnion.EveryExampleIsOneCleanSurface:SolidUnion.ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls:SolidUnion.MovesAreTriedInOrderUntilOneIsClean:SolidUnion.MicroEdgeCollapsesMendWhatTheMovesCannot'
 
 FORMAT_FILES = $(shell git ls-files '*.cpp' '*.hpp')
 format: deps

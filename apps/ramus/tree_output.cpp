@@ -129,6 +129,7 @@ void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
         stats["union_pinched_edges"] = report.pinchedEdges;
         stats["union_touching_points"] = report.touchingPoints;
         stats["union_crossing_moves"] = report.crossingMoves;
+        stats["union_collapsed_edges"] = report.collapsedEdges;
         stats["union_attempts"] = report.unionAttempts;
         stats["union_postponed_moves"] = report.postponedMoves;
         stats["union_reunions"] = report.reunions;

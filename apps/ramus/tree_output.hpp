@@ -132,8 +132,9 @@ void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model, const
 
 /// Adds, when the bark was welded, "weld_fallbacks" and "weld_crossings", and with the union
 /// "unions_applied", "unions_failed", "unions_of_convex_junctions", "union_crossings_left",
-/// "union_pinched_edges", "union_touching_points", "union_crossing_moves", "union_attempts",
-/// "union_postponed_moves" and "union_reunions" to `stats`.
+/// "union_pinched_edges", "union_touching_points", "union_crossing_moves",
+/// "union_collapsed_edges", "union_attempts", "union_postponed_moves" and "union_reunions" to
+/// `stats`.
 void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report);
 
 /// What a user should know about the bark: the solid union left meshes as they were (and why),

@@ -21,6 +21,9 @@ namespace ramus {
 inline constexpr std::size_t kSolidUnionAttempts = 7;
 /// The most re-unions unionClosedSurfaces makes after each attempt that leaves defects.
 inline constexpr std::size_t kSolidUnionReunions = 2;
+/// The most rounds of micro-edge collapses unionClosedSurfaces makes after the moves of each
+/// attempt or re-union where crossings are left (SolidUnionReport::collapsedEdges).
+inline constexpr std::size_t kSolidUnionCollapsePasses = 3;
 
 /// What unionClosedSurfaces did, for tests and --stats.
 struct SolidUnionReport {
@@ -53,6 +56,10 @@ struct SolidUnionReport {
     /// sheets it pinched together along an edge;
     /// remainingIntersections and pinchedEdges count what is left after.
     std::size_t crossingMoves = 0;
+    /// Edges of crossing triangles shorter than 1e-7 of the extent collapsed where the moves
+    /// could not part them: clusters of tiny triangles that the cut leaves where several
+    /// intersection curves meet within a float step (since session 36).
+    std::size_t collapsedEdges = 0;
     /// Edges of the result (welded by position) where k > 1 sheets meet, each sheet using the
     /// edge once each way: sheets the cut left closer than float resolution, pinched together
     /// by rounding. Each sheet stays closed and oriented; its vertices there are its own.
@@ -84,7 +91,12 @@ struct SolidUnionReport {
 /// corners of crossing pairs are moved apart by a few float steps (at most 1e-5 of the extent,
 /// report->crossingMoves) where that lowers the crossings and turns no triangle over, and the
 /// corners of pinched sheets into their own solid where that adds no crossing, in up to three
-/// rounds while some are left (at most 1e-5, 3e-5, 1e-4 of the extent); up to `maxAttempts`
+/// rounds while some are left (at most 1e-5, 3e-5, 1e-4 of the extent). Where crossings are
+/// left then, in clusters of tiny triangles that the cut leaves where several intersection
+/// curves meet within a float step, their edges shorter than 1e-7 of the extent are collapsed
+/// (where the surface stays a 2-manifold and no triangle turns over) and the moves made again,
+/// up to `maxCollapsePasses` rounds while each leaves fewer defects (report->collapsedEdges;
+/// since session 36 no shipped example needs more than its first attempt). Up to `maxAttempts`
 /// (clamped to 1–kSolidUnionAttempts) moves are tried, larger and smaller ones in turn (1e-5,
 /// 3e-5, 5e-6, 1e-5, 5e-6, 2e-5, 1e-4 of the extent, each time other vertices' moves; a move
 /// that makes more than 1.5 times the triangles intersect that the first did is tried last,
@@ -101,7 +113,8 @@ struct SolidUnionReport {
 /// (solidUnionAvailable() false).
 bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report = nullptr,
                          std::size_t maxAttempts = kSolidUnionAttempts,
-                         std::size_t maxReunions = kSolidUnionReunions);
+                         std::size_t maxReunions = kSolidUnionReunions,
+                         std::size_t maxCollapsePasses = kSolidUnionCollapsePasses);
 
 /// Whether this build has the solid union: CGAL's Polygon Mesh Processing is GPL-3.0-or-later,
 /// and a build configured with -DRAMUS_WITH_CGAL=OFF leaves it (and the GPL) out.

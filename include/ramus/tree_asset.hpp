@@ -63,8 +63,9 @@ struct TreeMeshReport {
     std::size_t tubedForUnion = 0;
     std::string firstFailure;  ///< SolidUnionReport::failure of the first failed one
     /// Over the united meshes: SolidUnionReport::remainingIntersections, ::pinchedEdges,
-    /// ::touchingPoints and ::crossingMoves.
-    std::size_t crossingsLeft = 0, pinchedEdges = 0, touchingPoints = 0, crossingMoves = 0;
+    /// ::touchingPoints, ::crossingMoves and ::collapsedEdges.
+    std::size_t crossingsLeft = 0, pinchedEdges = 0, touchingPoints = 0, crossingMoves = 0,
+                collapsedEdges = 0;
     /// Over the united meshes: SolidUnionReport::attempts (each a whole union), ::postponedMoves
     /// and ::reunions.
     std::size_t unionAttempts = 0, postponedMoves = 0, reunions = 0;

@@ -43,6 +43,9 @@ struct WeldedMeshParams {
     /// With solidUnion: the most re-unions after each attempt (unionClosedSurfaces'
     /// maxReunions; 0: none).
     std::size_t unionReunions = kSolidUnionReunions;
+    /// With solidUnion: the most rounds of micro-edge collapses after each attempt's or
+    /// re-union's moves (unionClosedSurfaces' maxCollapsePasses; 0: none).
+    std::size_t unionCollapsePasses = kSolidUnionCollapsePasses;
 };
 
 /// What the welder did, for tests and --stats.

@@ -1611,6 +1611,126 @@ void dropPartedPieces(Mesh& mesh, Surfaces& surfaces, std::vector<detail::Triang
     report.outputComponents = countComponents(surfaces.weld, surfaces.positions, mesh.indices);
 }
 
+// Edges of crossing triangles shorter than this fraction of the mesh's extent are collapsed
+// where the float moves leave crossings (session 36). Where several intersection curves meet
+// within a float step or two, the cut leaves clusters of triangles with edges of 1e-8–6e-6
+// units (ABOP 1.24c, 243 units wide, at coordinates up to 45, where a float step is 4e-6),
+// neighbours folded flat onto each other that no move of one corner parts; the shortest
+// real feature of a plant is a twig's ring, thousands of times longer.
+constexpr double kMicroEdge = 1e-7;
+
+// Collapses edges shorter than kMicroEdge of the extent of the triangles in the crossing pairs
+// `crossing` of the closed `surfaces` of `mesh`: the edge's first surface vertex moves onto the
+// second (its mesh vertices keep their attributes) and the two triangles on the edge go. Only
+// where the surface stays a 2-manifold (the two vertices have no common neighbour but the
+// triangles' third corners), no triangle turns over or goes flat, neither vertex shares its
+// position with another surface vertex, and no collapse beside it was made in this pass.
+// `changed` gets, per triangle of the result, whether it moved or was in a crossing pair (the
+// others cross nothing, as before). Returns how many edges were collapsed; none: all unchanged.
+std::size_t collapseMicroEdges(Mesh& mesh, Surfaces& surfaces,
+                               const std::vector<detail::TrianglePair>& crossing,
+                               std::vector<char>& changed) {
+    const double shortest = kMicroEdge * mesh.bounds().extent().maxCoeff();
+    const std::vector<std::uint32_t>& fan = surfaces.fan;
+    const std::size_t triangles = mesh.triangleCount();
+    std::vector<Vec3f> at(surfaces.vertices);                        // per surface vertex
+    std::vector<std::uint32_t> owner(surfaces.positions, kUnknown);  // per position
+    std::vector<char> blocked(surfaces.vertices, 0);  // shares its position, or near a collapse
+    std::vector<std::uint32_t> first(std::size_t{surfaces.vertices} + 1, 0);
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t v = fan[c];
+        at[v] = mesh.positions[mesh.indices[c]];
+        std::uint32_t& o = owner[surfaces.weld[mesh.indices[c]]];
+        if (o == kUnknown) o = v;
+        if (o != v) blocked[v] = blocked[o] = 1;
+        ++first[v + 1];
+    }
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    std::vector<std::uint32_t> around(first.back());  // per surface vertex: its corners
+    {
+        std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+        for (std::uint32_t c = 0; c < mesh.indices.size(); ++c) around[fill[fan[c]]++] = c;
+    }
+    auto cornersOf = [&](std::uint32_t v) {
+        return std::span(around.data() + first[v], around.data() + first[v + 1]);
+    };
+    auto corner = [&](std::uint32_t t, std::uint32_t k) { return fan[3 * std::size_t{t} + k]; };
+    auto normal = [&](std::uint32_t t, std::uint32_t moved, const Vec3f& to) {
+        std::array<Vec3, 3> p;
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            p[k] = (corner(t, k) == moved ? to : at[corner(t, k)]).cast<double>();
+        }
+        return Vec3((p[1] - p[0]).cross(p[2] - p[0]));
+    };
+    std::vector<char> gone(triangles, 0);
+    std::vector<std::uint32_t> neighbours;
+    changed.assign(triangles, 0);
+    for (const auto& [s, t] : crossing) changed[s] = changed[t] = 1;
+    std::size_t collapsed = 0;
+    for (const auto& pair : crossing) {
+        for (const std::uint32_t t : {pair.first, pair.second}) {
+            for (std::uint32_t k = 0; k < 3 && !gone[t]; ++k) {
+                const std::uint32_t v = corner(t, k), w = corner(t, (k + 1) % 3);
+                if (blocked[v] || blocked[w] ||
+                    !((at[v] - at[w]).cast<double>().norm() < shortest)) {
+                    continue;
+                }
+                // The triangles on the edge, and the neighbours v and w have in common.
+                std::vector<std::uint32_t> onEdge;
+                neighbours.clear();
+                for (const std::uint32_t c : cornersOf(v)) {
+                    const std::uint32_t f = c / 3;
+                    bool hasW = false;
+                    for (std::uint32_t j = 0; j < 3; ++j) hasW = hasW || corner(f, j) == w;
+                    if (hasW) onEdge.push_back(f);
+                    for (std::uint32_t j = 0; j < 3; ++j) neighbours.push_back(corner(f, j));
+                }
+                std::sort(neighbours.begin(), neighbours.end());
+                neighbours.erase(std::unique(neighbours.begin(), neighbours.end()),
+                                 neighbours.end());
+                std::size_t common = 0;
+                std::vector<std::uint32_t> ofW;
+                for (const std::uint32_t c : cornersOf(w)) {
+                    for (std::uint32_t j = 0; j < 3; ++j) ofW.push_back(corner(c / 3, j));
+                }
+                std::sort(ofW.begin(), ofW.end());
+                ofW.erase(std::unique(ofW.begin(), ofW.end()), ofW.end());
+                for (const std::uint32_t x : ofW) {
+                    if (x != v && x != w &&
+                        std::binary_search(neighbours.begin(), neighbours.end(), x)) {
+                        ++common;
+                    }
+                }
+                if (onEdge.size() != 2 || common != 2) continue;
+                bool turns = false;
+                for (const std::uint32_t c : cornersOf(v)) {
+                    const std::uint32_t f = c / 3;
+                    if (f == onEdge[0] || f == onEdge[1]) continue;
+                    const Vec3 after = normal(f, v, at[w]);
+                    turns = turns || !(after.dot(normal(f, v, at[v])) > 0.0) ||
+                            !(after.squaredNorm() > 0.0);
+                }
+                if (turns) continue;
+                for (const std::uint32_t c : cornersOf(v)) {
+                    mesh.positions[mesh.indices[c]] = at[w];
+                    changed[c / 3] = 1;
+                }
+                gone[onEdge[0]] = gone[onEdge[1]] = 1;
+                for (const std::uint32_t x : neighbours) blocked[x] = 1;
+                for (const std::uint32_t x : ofW) blocked[x] = 1;
+                ++collapsed;
+            }
+        }
+    }
+    if (collapsed == 0) return 0;
+    std::vector<char> keep(triangles);
+    for (std::size_t f = 0; f < triangles; ++f) keep[f] = !gone[f];
+    keepFlags(changed, keep);
+    keepTriangles(mesh, keep);
+    surfaces = surfacesOf(mesh);
+    return collapsed;
+}
+
 // 6. Moves corners a few float steps (crossing_repair.hpp) to separate the crossing pairs of the
 // closed surfaces `surfaces` of `mesh`, then to part sheets pinched together along an edge;
 // `report` gets the moves and what is left: crossings (counted again over the whole mesh) and
@@ -1618,7 +1738,8 @@ void dropPartedPieces(Mesh& mesh, Surfaces& surfaces, std::vector<detail::Triang
 // a cut one (unionAttempt's `suspect`; the others crossed nothing, so the first search looks
 // only at pairs with a piece), empty to search the whole mesh.
 void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const std::vector<char>& pieces,
-                             SolidUnionReport& report, std::vector<detail::TrianglePair>& left) {
+                             std::size_t collapsePasses, SolidUnionReport& report,
+                             std::vector<detail::TrianglePair>& left) {
     const double extent = mesh.bounds().extent().maxCoeff();
     splitSharedMeshVertices(mesh, surfaces);
     std::vector<detail::TrianglePair> crossing = crossingPairs(mesh, surfaces, pieces);
@@ -1636,18 +1757,47 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const std::vector<ch
         crossing = crossingPairs(mesh, surfaces, suspect);
         touching = touchingPoints(mesh, surfaces);
     };
-    for (const double move : kSeparationMoves) {
-        if (crossing.empty() && touching == 0) break;
-        const double maxMove = move * extent;
-        if (!crossing.empty()) {
-            detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
-            take(surface, detail::separateCrossings(surface, crossing, maxMove));
+    auto moveApart = [&] {
+        for (const double move : kSeparationMoves) {
+            if (crossing.empty() && touching == 0) break;
+            const double maxMove = move * extent;
+            if (!crossing.empty()) {
+                detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
+                take(surface, detail::separateCrossings(surface, crossing, maxMove));
+            }
+            if (touching > 0) {
+                detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
+                const std::vector<std::uint32_t> corners = sheetCornersToPart(mesh, surfaces);
+                take(surface, detail::unpinchVertices(surface, corners, maxMove));
+            }
         }
-        if (touching > 0) {
-            detail::CrossingSurface surface = crossingSurfaceOf(mesh, surfaces);
-            const std::vector<std::uint32_t> corners = sheetCornersToPart(mesh, surfaces);
-            take(surface, detail::unpinchVertices(surface, corners, maxMove));
+    };
+    moveApart();
+    // Clusters of tiny triangles that the moves could not part: their shortest edges collapsed,
+    // then the moves again, kept where that leaves fewer defects.
+    for (std::size_t pass = 0; pass < collapsePasses && !crossing.empty(); ++pass) {
+        const Mesh meshBefore = mesh;
+        const Surfaces surfacesBefore = surfaces;
+        const std::vector<detail::TrianglePair> crossingBefore = crossing;
+        const std::size_t defectsBefore = crossing.size() + touching;
+        const std::size_t movesBefore = report.crossingMoves;
+        std::vector<char> changed;
+        const std::size_t collapsed = collapseMicroEdges(mesh, surfaces, crossing, changed);
+        if (collapsed > 0 && surfaces.closed) {
+            crossing = crossingPairs(mesh, surfaces, changed);
+            touching = touchingPoints(mesh, surfaces);
+            moveApart();
+            if (crossing.size() + touching < defectsBefore) {
+                report.collapsedEdges += collapsed;
+                continue;
+            }
         }
+        mesh = meshBefore;
+        surfaces = surfacesBefore;
+        crossing = crossingBefore;
+        touching = defectsBefore - crossing.size();
+        report.crossingMoves = movesBefore;
+        break;
     }
     if (touched) dropPartedPieces(mesh, surfaces, crossing, report);
     report.remainingIntersections = crossing.size();
@@ -1744,6 +1894,7 @@ void addReunion(SolidUnionReport& report, const SolidUnionReport& reunion) {
     report.enclosedPieces += reunion.enclosedPieces;
     report.sliversRemoved += reunion.sliversRemoved;
     report.crossingMoves += reunion.crossingMoves;
+    report.collapsedEdges += reunion.collapsedEdges;
     report.remainingIntersections = reunion.remainingIntersections;
     report.pinchedEdges = reunion.pinchedEdges;
     report.touchingPoints = reunion.touchingPoints;
@@ -1752,7 +1903,7 @@ void addReunion(SolidUnionReport& report, const SolidUnionReport& reunion) {
 }  // namespace
 
 bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAttempts,
-                         std::size_t maxReunions) {
+                         std::size_t maxReunions, std::size_t maxCollapsePasses) {
     SolidUnionReport local;
     SolidUnionReport& r = report != nullptr ? *report : local;
     r = SolidUnionReport{};
@@ -1796,7 +1947,8 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
         r.failure = tried.failure;
         if (outcome != Outcome::done) return outcome;
         std::vector<detail::TrianglePair> left;
-        separateRoundingDefects(trial, std::move(surfaces), suspect, tried, left);
+        separateRoundingDefects(trial, std::move(surfaces), suspect, maxCollapsePasses, tried,
+                                left);
         if (!best || tried.defects() < bestReport.defects()) {
             best = std::move(trial);
             bestReport = tried;
@@ -1829,7 +1981,8 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
                 return;
             }
             std::vector<detail::TrianglePair> left;
-            separateRoundingDefects(trial, std::move(united), suspect, tried, left);
+            separateRoundingDefects(trial, std::move(united), suspect, maxCollapsePasses, tried,
+                                    left);
             if (tried.defects() >= bestReport.defects()) continue;
             best = std::move(trial);
             bestCrossing = std::move(left);
@@ -1871,7 +2024,7 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
 namespace ramus {
 
 bool unionClosedSurfaces(Mesh& /*mesh*/, SolidUnionReport* /*report*/, std::size_t /*maxAttempts*/,
-                         std::size_t /*maxReunions*/) {
+                         std::size_t /*maxReunions*/, std::size_t /*maxCollapsePasses*/) {
     throw Error(std::string(kSolidUnionMissing));
 }
 

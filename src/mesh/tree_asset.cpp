@@ -81,6 +81,7 @@ public:
                 report_->pinchedEdges += weld.solidUnion.pinchedEdges;
                 report_->touchingPoints += weld.solidUnion.touchingPoints;
                 report_->crossingMoves += weld.solidUnion.crossingMoves;
+                report_->collapsedEdges += weld.solidUnion.collapsedEdges;
                 report_->unionAttempts += weld.solidUnion.attempts;
                 report_->postponedMoves += weld.solidUnion.postponedMoves;
                 report_->reunions += weld.solidUnion.reunions;

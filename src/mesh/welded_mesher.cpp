@@ -502,7 +502,8 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
     WeldReport weld;
     Mesh mesh = detail::WeldBuilder(tree, params).build(&weld);
     if (params.solidUnion) {
-        unionClosedSurfaces(mesh, &weld.solidUnion, params.unionAttempts, params.unionReunions);
+        unionClosedSurfaces(mesh, &weld.solidUnion, params.unionAttempts, params.unionReunions,
+                            params.unionCollapsePasses);
         // Shrunk junctions hug neighbouring branches within hundredths of a radius; where the
         // union's cut, rounded to float, leaves such grazes crossing or pinched after every
         // attempt (make union-check, sessions 24–27: ABOP 1.24a and 2.8c; none since session
@@ -514,7 +515,7 @@ Mesh buildWeldedTreeMesh(const BranchTree& tree, const WeldedMeshParams& params,
             WeldReport convexWeld;
             Mesh convex = detail::WeldBuilder(tree, hulls).build(&convexWeld);
             unionClosedSurfaces(convex, &convexWeld.solidUnion, params.unionAttempts,
-                                params.unionReunions);
+                                params.unionReunions, params.unionCollapsePasses);
             if (unionDefects(convexWeld.solidUnion) < unionDefects(weld.solidUnion)) {
                 mesh = std::move(convex);
                 weld = std::move(convexWeld);

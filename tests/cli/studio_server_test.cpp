@@ -209,6 +209,7 @@ TEST_F(Studio, WeldsAndUnitesTheBarkAndWarnsOfPieces) {
     EXPECT_EQ(united.body["stats"]["union_postponed_moves"], 0);
     EXPECT_EQ(united.body["stats"]["union_reunions"], 0);
     EXPECT_EQ(united.body["stats"]["union_touching_points"], 0);
+    EXPECT_EQ(united.body["stats"]["union_collapsed_edges"], 0);
     EXPECT_TRUE(united.body["warnings"].empty()) << united.body["warnings"].dump();
 
     const Reply wrong = post("/api/lsystem", json{{"text", small}, {"mesh", {{"weld", "yes"}}}});

@@ -231,9 +231,9 @@ TEST(SolidUnion, EveryExampleIsOneCleanSurface) {
 // Until session 22 multi_trunk_0 needed the hulls; ABOP 1.24a and 2.8c in sessions 24–27; since
 // session 28 no example does after all attempts. Since session 31's refinement 2.8c is clean at
 // its first attempt too; since session 36, when the crossing repair mends neighbours that fold
-// through each other, so are ABOP 1.24a, 1.24b, 1.27 and 1.31a, while 1.24c's first attempt,
-// without its re-unions, keeps defects: the hulls are tried there, and the union kept is the
-// cleaner one (about 10 s in the Release build), so this runs with make union-check.
+// through each other and collapses micro-edges, so is every example. Without re-unions and
+// collapses ABOP 1.24c's first attempt keeps defects: the hulls are tried there, and the union
+// kept is the cleaner one (about 7 s in the Release build), so this runs with make union-check.
 TEST(SolidUnion, ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls) {
     if (std::getenv("RAMUS_LARGE_TESTS") == nullptr) {
         GTEST_SKIP() << "set RAMUS_LARGE_TESTS=1 (make union-check)";
@@ -243,6 +243,7 @@ TEST(SolidUnion, ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls) {
     oneAttempt.solidUnion = true;
     oneAttempt.unionAttempts = 1;
     oneAttempt.unionReunions = 0;
+    oneAttempt.unionCollapsePasses = 0;
     WeldReport report;
     const Mesh mesh = buildWeldedTreeMesh(tree, oneAttempt, &report);
     WeldedMeshParams hullsOnly = oneAttempt;
@@ -264,18 +265,18 @@ TEST(SolidUnion, ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls) {
     }
 }
 
-// The moves are tried in order until one leaves no defect; a re-union of a result that keeps
-// a few may mend them first. ABOP 2.8c, a flat plant, is clean after its first move and one
-// re-union, or without re-unions at its third move (the second, a larger one, tilting its
-// coplanar faces through more of each other, put off: SolidUnionReport::postponedMoves); ABOP
-// 1.24c, a dense plant, keeps a few crossings after its first move: without re-unions it is
-// clean at its fourth, with them after its second and three re-unions (two after the first
-// attempt; the second attempt kept more defects than the best result so far, whose re-union
-// then came out clean).
-// Since session 36 the crossing repair mends neighbours that fold through each other (the
-// union has counted them since session 35): before, 2.8c needed four moves without re-unions
-// and ABOP 1.24a kept two such folds after all seven. With make union-check (about 30 s in the
-// Release build).
+// Without micro-edge collapses (below) the first attempt keeps defects on two examples, which
+// shows steps 7 and 8 at work: the moves are tried in order until one leaves no defect; a
+// re-union of a result that keeps a few may mend them first. ABOP 2.8c, a flat plant, is clean
+// after its first move and one re-union, or without re-unions at its third move (the second, a
+// larger one, tilting its coplanar faces through more of each other, put off:
+// SolidUnionReport::postponedMoves); ABOP 1.24c, a dense plant, keeps a few crossings after its
+// first move: without re-unions it is clean at its fourth, with them after its second and three
+// re-unions (two after the first attempt; the second attempt kept more defects than the best result
+// so far, whose re-union then came out clean). Since session 36 the crossing repair mends
+// neighbours that fold through each other (the union has counted them since session 35):
+// before, 2.8c needed four moves without re-unions and ABOP 1.24a kept two such folds after all
+// seven. With make union-check (about 30 s in the Release build).
 TEST(SolidUnion, MovesAreTriedInOrderUntilOneIsClean) {
     if (std::getenv("RAMUS_LARGE_TESTS") == nullptr) {
         GTEST_SKIP() << "set RAMUS_LARGE_TESTS=1 (make union-check)";
@@ -291,6 +292,7 @@ TEST(SolidUnion, MovesAreTriedInOrderUntilOneIsClean) {
         WeldedMeshParams params;
         params.solidUnion = true;
         params.unionReunions = c.reunions;
+        params.unionCollapsePasses = 0;
         WeldReport report;
         const Mesh mesh = buildWeldedTreeMesh(growExample(c.example, -1), params, &report);
         const SolidUnionReport& u = report.solidUnion;
@@ -304,6 +306,36 @@ TEST(SolidUnion, MovesAreTriedInOrderUntilOneIsClean) {
         EXPECT_TRUE(top.closedOriented);
         EXPECT_EQ(top.nonManifoldVertices, 0u);
         EXPECT_EQ(top.components, 1u);
+    }
+}
+
+// Where the cut leaves clusters of tiny triangles that the float moves cannot part (edges of
+// 1e-8–6e-6 units where several intersection curves meet within a float step), collapsing
+// their shortest edges mends them: ABOP 1.24c (two attempts and three re-unions without, above)
+// and 2.8c (a re-union) are clean at their first attempt, without re-unions, since session 36,
+// with a few edges collapsed. With make union-check.
+TEST(SolidUnion, MicroEdgeCollapsesMendWhatTheMovesCannot) {
+    if (std::getenv("RAMUS_LARGE_TESTS") == nullptr) {
+        GTEST_SKIP() << "set RAMUS_LARGE_TESTS=1 (make union-check)";
+    }
+    for (const char* example : {"abop_1_24c", "abop_2_8c"}) {
+        SCOPED_TRACE(example);
+        WeldedMeshParams params;
+        params.solidUnion = true;
+        WeldReport report;
+        const Mesh mesh = buildWeldedTreeMesh(growExample(example, -1), params, &report);
+        const SolidUnionReport& u = report.solidUnion;
+        EXPECT_TRUE(u.applied) << u.failure;
+        EXPECT_EQ(u.attempts, 1u);
+        EXPECT_EQ(u.reunions, 0u);
+        EXPECT_GT(u.collapsedEdges, 0u);
+        EXPECT_LE(u.collapsedEdges, 4u);
+        EXPECT_EQ(u.defects(), 0u);
+        const test::Topology top = test::analyzeTopology(mesh);
+        EXPECT_TRUE(top.closedOriented);
+        EXPECT_EQ(top.nonManifoldVertices, 0u);
+        EXPECT_EQ(top.components, 1u);
+        EXPECT_EQ(countFoldedNeighbours(mesh), 0u);
     }
 }
 
