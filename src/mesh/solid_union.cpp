@@ -1662,8 +1662,17 @@ std::size_t collapseMicroEdges(Mesh& mesh, Surfaces& surfaces,
         }
         return Vec3((p[1] - p[0]).cross(p[2] - p[0]));
     };
+    // The surface vertices of v's triangles (v among them), sorted.
+    auto linkOf = [&](std::uint32_t v, std::vector<std::uint32_t>& link) {
+        link.clear();
+        for (const std::uint32_t c : cornersOf(v)) {
+            for (std::uint32_t j = 0; j < 3; ++j) link.push_back(corner(c / 3, j));
+        }
+        std::sort(link.begin(), link.end());
+        link.erase(std::unique(link.begin(), link.end()), link.end());
+    };
     std::vector<char> gone(triangles, 0);
-    std::vector<std::uint32_t> neighbours;
+    std::vector<std::uint32_t> linkV, linkW, onEdge;
     changed.assign(triangles, 0);
     for (const auto& [s, t] : crossing) changed[s] = changed[t] = 1;
     std::size_t collapsed = 0;
@@ -1675,33 +1684,22 @@ std::size_t collapseMicroEdges(Mesh& mesh, Surfaces& surfaces,
                     !((at[v] - at[w]).cast<double>().norm() < shortest)) {
                     continue;
                 }
-                // The triangles on the edge, and the neighbours v and w have in common.
-                std::vector<std::uint32_t> onEdge;
-                neighbours.clear();
+                // A 2-manifold after the collapse: two triangles on the edge, and no neighbour
+                // of both but their third corners.
+                onEdge.clear();
                 for (const std::uint32_t c : cornersOf(v)) {
                     const std::uint32_t f = c / 3;
-                    bool hasW = false;
-                    for (std::uint32_t j = 0; j < 3; ++j) hasW = hasW || corner(f, j) == w;
-                    if (hasW) onEdge.push_back(f);
-                    for (std::uint32_t j = 0; j < 3; ++j) neighbours.push_back(corner(f, j));
-                }
-                std::sort(neighbours.begin(), neighbours.end());
-                neighbours.erase(std::unique(neighbours.begin(), neighbours.end()),
-                                 neighbours.end());
-                std::size_t common = 0;
-                std::vector<std::uint32_t> ofW;
-                for (const std::uint32_t c : cornersOf(w)) {
-                    for (std::uint32_t j = 0; j < 3; ++j) ofW.push_back(corner(c / 3, j));
-                }
-                std::sort(ofW.begin(), ofW.end());
-                ofW.erase(std::unique(ofW.begin(), ofW.end()), ofW.end());
-                for (const std::uint32_t x : ofW) {
-                    if (x != v && x != w &&
-                        std::binary_search(neighbours.begin(), neighbours.end(), x)) {
-                        ++common;
+                    if (corner(f, 0) == w || corner(f, 1) == w || corner(f, 2) == w) {
+                        onEdge.push_back(f);
                     }
                 }
+                linkOf(v, linkV);
+                linkOf(w, linkW);
+                const auto common = std::count_if(linkW.begin(), linkW.end(), [&](std::uint32_t x) {
+                    return x != v && x != w && std::binary_search(linkV.begin(), linkV.end(), x);
+                });
                 if (onEdge.size() != 2 || common != 2) continue;
+                // No other triangle of v turns over or goes flat when v moves onto w.
                 bool turns = false;
                 for (const std::uint32_t c : cornersOf(v)) {
                     const std::uint32_t f = c / 3;
@@ -1716,8 +1714,8 @@ std::size_t collapseMicroEdges(Mesh& mesh, Surfaces& surfaces,
                     changed[c / 3] = 1;
                 }
                 gone[onEdge[0]] = gone[onEdge[1]] = 1;
-                for (const std::uint32_t x : neighbours) blocked[x] = 1;
-                for (const std::uint32_t x : ofW) blocked[x] = 1;
+                for (const std::uint32_t x : linkV) blocked[x] = 1;
+                for (const std::uint32_t x : linkW) blocked[x] = 1;
                 ++collapsed;
             }
         }
