@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -367,6 +368,14 @@ ColonizeResult colonize(const ColonizeParams& params, std::span<const Vec3> poin
         });
         if (inside) continue;
         const Vec3f p = points[i].cast<float>();
+        if (!p.allFinite()) {  // a finite double beyond float's range (fuzzed configs hung)
+            std::ostringstream what;
+            what << "attraction point " << i << " (" << points[i].x() << ", " << points[i].y()
+                 << ", " << points[i].z()
+                 << ") is beyond the float range the points are kept in (magnitudes up to "
+                 << std::numeric_limits<float>::max() << "); make the envelopes smaller";
+            throw Error(what.str());
+        }
         xs.push_back(p.x()), ys.push_back(p.y()), zs.push_back(p.z());
     }
     result.warnings = colonizeWarnings(params, xs.size(), obstacles);

@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "ramus/error.hpp"
+
 namespace ramus::colonize_detail {
 
 SpatialGrid::SpatialGrid(std::span<const float> xs, std::span<const float> ys,
@@ -16,6 +18,8 @@ SpatialGrid::SpatialGrid(std::span<const float> xs, std::span<const float> ys,
     for (std::size_t i = 0; i < n; ++i) box.add(point(i));
     if (box.empty()) box.add(Vec3::Zero());
     const Vec3 extent = box.extent();
+    // No cell size covers an infinite extent: the search below would never end.
+    if (!extent.allFinite()) throw Error("spatial grid over points that are not finite");
 
     // Cells of d_i / subdivision; a margin of cells wide enough for nodes within d_i of a point.
     // Counts are computed in doubles and only converted once they fit: a tiny radius against a

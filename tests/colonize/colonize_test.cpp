@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "colonize/growth_rules.hpp"
 #include "colonize_test_util.hpp"
@@ -63,6 +64,22 @@ TEST(Colonize, HugeExtentAgainstTheInfluenceRadiusStillGrows) {
     ASSERT_EQ(r.trees.size(), 1u);
     EXPECT_GT(r.trees[0].nodes().size(), 2u);
     EXPECT_EQ(r.attractorsLeft, 2u);  // the far ones
+}
+
+// A point beyond the float range the attractors are kept in (a finite double, 1e39, as an
+// ellipsoid with radii of 3.6e95 gives): an error naming the point, not a grid whose cell search
+// never ends (a fuzzed config hung there, session 36).
+TEST(Colonize, PointsBeyondTheFloatRangeAreAnError) {
+    const std::vector<Vec3> points = {Vec3(0, 10, 0), Vec3(0, 1e39, 0)};
+    try {
+        (void)colonize(smallParams(), points);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(
+                      "attraction point 1 (0, 1e+39, 0) is beyond the float range"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(Colonize, StopsWhenNoAttractorsRemain) {
