@@ -1777,7 +1777,7 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const std::vector<ch
         const Mesh meshBefore = mesh;
         const Surfaces surfacesBefore = surfaces;
         const std::vector<detail::TrianglePair> crossingBefore = crossing;
-        const std::size_t defectsBefore = crossing.size() + touching;
+        const std::size_t touchingBefore = touching;
         const std::size_t movesBefore = report.crossingMoves;
         std::vector<char> changed;
         const std::size_t collapsed = collapseMicroEdges(mesh, surfaces, crossing, changed);
@@ -1785,7 +1785,7 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const std::vector<ch
             crossing = crossingPairs(mesh, surfaces, changed);
             touching = touchingPoints(mesh, surfaces);
             moveApart();
-            if (crossing.size() + touching < defectsBefore) {
+            if (crossing.size() + touching < crossingBefore.size() + touchingBefore) {
                 report.collapsedEdges += collapsed;
                 continue;
             }
@@ -1793,7 +1793,7 @@ void separateRoundingDefects(Mesh& mesh, Surfaces surfaces, const std::vector<ch
         mesh = meshBefore;
         surfaces = surfacesBefore;
         crossing = crossingBefore;
-        touching = defectsBefore - crossing.size();
+        touching = touchingBefore;
         report.crossingMoves = movesBefore;
         break;
     }
