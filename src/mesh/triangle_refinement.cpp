@@ -256,10 +256,17 @@ struct PlaneTable {
         return PlanePoint{bounds[static_cast<std::size_t>(u)], bounds[static_cast<std::size_t>(v)],
                           static_cast<std::uint32_t>(ids.size() - 1)};
     }
-    // The exact projected coordinates.
-    std::array<Exact::FT::ET, 2> exact2(std::uint32_t i) const {
+    // The exact projected coordinates, as references into `exact` (copying the rationals had
+    // been most of the exact comparisons' time).
+    struct Exact2 {
+        const Exact::FT::ET& u;
+        const Exact::FT::ET& v;
+        const Exact::FT::ET& operator[](int axis) const { return axis == 0 ? u : v; }
+    };
+    Exact2 exact2(std::uint32_t i) const {
         if (!exact[i]) exact[i] = refiner->exactPoint(ids[i]);
         const auto& e = CGAL::exact(*exact[i]);
+        static_assert(std::is_same_v<decltype(e[0]), const Exact::FT::ET&>);  // no temporary
         const int u = dropped == 0 ? 1 : 0, v = dropped == 2 ? 1 : 2;
         return {e[u], e[v]};
     }
@@ -324,6 +331,10 @@ struct PlaneTraits {
     struct Compare {
         const PlaneTable* table;
         CGAL::Comparison_result operator()(const PlanePoint& p, const PlanePoint& q) const {
+            // CGAL compares a point with itself while it triangulates the hole a constraint
+            // leaves, which the intervals of a new point cannot decide: ABOP 1.24a's exact
+            // fallbacks (39 k) were all such, each building the point's exact coordinates.
+            if (p.index == q.index) return CGAL::EQUAL;
             {
                 CGAL::Protect_FPU_rounding<true> protect;
                 const auto order = axis == 0 ? CGAL::compare(p.x, q.x) : CGAL::compare(p.y, q.y);
