@@ -301,12 +301,14 @@ struct PlaneTraits {
         const PlaneTable* table;
         CGAL::Orientation operator()(const PlanePoint& p, const PlanePoint& q,
                                      const PlanePoint& r) const {
-            if (table->onOneLine({p.index, q.index, r.index})) return CGAL::COLLINEAR;
             {
+                // Points on one line have bounds that cannot tell their orientation (or tell
+                // COLLINEAR): the lines are looked up only where the bounds leave it open.
                 CGAL::Protect_FPU_rounding<true> protect;
                 const auto sign = CGAL::orientationC2(p.x, p.y, q.x, q.y, r.x, r.y);
                 if (CGAL::is_certain(sign)) return CGAL::get_certain(sign);
             }
+            if (table->onOneLine({p.index, q.index, r.index})) return CGAL::COLLINEAR;
             const auto a = table->exact2(p.index), b = table->exact2(q.index),
                        c = table->exact2(r.index);
             return CGAL::orientationC2(a[0], a[1], b[0], b[1], c[0], c[1]);
