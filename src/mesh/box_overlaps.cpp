@@ -139,30 +139,36 @@ class CellTable {
 public:
     template <class Include>
     CellTable(const std::vector<Box3>& boxes, const BoxHierarchy& levels, Include include) {
-        const auto n = static_cast<std::uint32_t>(boxes.size());
-        auto forEntries = [&](auto visit) {
-            for (std::uint32_t i = 0; i < n; ++i) {
-                if (levels.level(i) < 0 || !include(i)) continue;
-                used_[static_cast<std::size_t>(levels.level(i))] = true;
-                levels.forCells(boxes[i], levels.level(i),
-                                [&](std::uint64_t key, std::uint32_t firstOn) {
-                                    visit(Entry{key, i, firstOn});
-                                });
-            }
-        };
-        std::size_t entries = 0;
-        forEntries([&](const Entry&) { ++entries; });
+        // The entries in box order, each cell's in one pass (the cells' bounds take divisions),
+        // then a counting sort by bucket.
+        std::vector<Entry> made;
+        made.reserve(boxes.size());
+        for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+            if (levels.level(i) < 0 || !include(i)) continue;
+            used_[static_cast<std::size_t>(levels.level(i))] = true;
+            levels.forCells(boxes[i], levels.level(i),
+                            [&](std::uint64_t key, std::uint32_t firstOn) {
+                                made.push_back(Entry{key, i, firstOn});
+                            });
+        }
         buckets_ = 1;
-        while (buckets_ < entries) buckets_ *= 2;
+        while (buckets_ < made.size()) buckets_ *= 2;
         first_.assign(buckets_ + 1, 0);
-        forEntries([&](const Entry& e) { ++first_[bucketOf(e.key) + 1]; });
+        std::vector<std::uint32_t> bucketOfEntry(made.size());
+        for (std::size_t k = 0; k < made.size(); ++k) {
+            bucketOfEntry[k] = static_cast<std::uint32_t>(bucketOf(made[k].key));
+            ++first_[bucketOfEntry[k] + 1];
+        }
         for (std::size_t b = 0; b < buckets_; ++b) first_[b + 1] += first_[b];
-        entries_.resize(entries);
+        entries_.resize(made.size());
         std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
-        forEntries([&](const Entry& e) { entries_[next[bucketOf(e.key)]++] = e; });
-        forEachOnCores(buckets_, [&](std::size_t b) {
-            std::sort(entries_.begin() + first_[b], entries_.begin() + first_[b + 1]);
-        });
+        for (std::size_t k = 0; k < made.size(); ++k) entries_[next[bucketOfEntry[k]]++] = made[k];
+        // In box order already: only buckets that several cells share need sorting (buckets are
+        // as many as entries, and cells hold tens of entries each).
+        for (std::size_t b = 0; b < buckets_; ++b) {
+            const auto from = entries_.begin() + first_[b], to = entries_.begin() + first_[b + 1];
+            if (!std::is_sorted(from, to)) std::sort(from, to);
+        }
     }
 
     std::size_t buckets() const { return buckets_; }
