@@ -51,15 +51,15 @@ using PairFilter = std::function<bool(std::uint32_t, std::uint32_t)>;
 /// on each); of the cells of a level that both boxes of a pair meet, the one holding the lowest
 /// corner of their intersection reports it. With suspects only the suspects are entered: every
 /// box looks them up on its level and above, and every suspect looks up the other boxes (in a
-/// table of their own) above its level. For the boxes of a mesh's triangles the work grows with
-/// the boxes and the pairs, whatever the mix of sizes (a tree's trunk beside its twigs, a flat
-/// plant's large leaves). Replaced CGAL's box intersection (a segment tree that sorts the boxes
-/// on every level) in session 30: the union's box searches had taken 0.5 s of tree_3d's 1.5 s
-/// (8 derivations, 230 k triangles).
-/// Only pairs where keep(i, j) holds are returned (every pair where `keep` is empty): the
-/// test runs as the pairs are found, on the search's threads, so that the many pairs a test
-/// rejects (for a mesh's triangles: neighbours sharing a corner) are never stored (tree_3d:
-/// 1.76 M overlapping pairs, 14 MB).
+/// table of their own) above its level; where at most one box in 32 is a suspect, the suspects
+/// go into a box tree (box_tree.hpp) that every box looks up instead. For the boxes of a mesh's
+/// triangles the work grows with the boxes and the pairs, whatever the mix of sizes (a tree's trunk
+/// beside its twigs, a flat plant's large leaves). Replaced CGAL's box intersection (a segment tree
+/// that sorts the boxes on every level) in session 30: the union's box searches had taken 0.5 s of
+/// tree_3d's 1.5 s (8 derivations, 230 k triangles). Only pairs where keep(i, j) holds are returned
+/// (every pair where `keep` is empty): the test runs as the pairs are found, on the search's
+/// threads, so that the many pairs a test rejects (for a mesh's triangles: neighbours sharing a
+/// corner) are never stored (tree_3d: 1.76 M overlapping pairs, 14 MB).
 std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
                                       const std::vector<char>& suspect,
                                       const PairFilter& keep = {});

@@ -83,6 +83,32 @@ TEST(BoxOverlaps, OnlyPairsWithASuspect) {
     EXPECT_EQ(sorted(detail::overlappingBoxes(boxes, suspect)), expected);
 }
 
+// Few suspects (at most one box in 32) are looked up in a tree of their own: the same pairs.
+TEST(BoxOverlaps, OnlyPairsWithOneOfFewSuspects) {
+    const std::vector<Box3> boxes = mixedBoxes(5);
+    for (const std::size_t every : {40, 300}) {
+        std::vector<char> suspect(boxes.size(), 0);
+        for (std::size_t i = 3; i < boxes.size(); i += every) suspect[i] = 1;
+        suspect[boxes.size() - 1] = 1;  // a wide one
+        const std::vector<BoxPair> expected = allPairsOverlapping(boxes, suspect);
+        EXPECT_GT(expected.size(), 20u);
+        const std::vector<BoxPair> found = detail::overlappingBoxes(boxes, suspect);
+        EXPECT_EQ(sorted(found), expected) << "every " << every;  // so none twice
+        for (const auto& [i, j] : found) EXPECT_LT(i, j);
+        EXPECT_EQ(found, detail::overlappingBoxes(boxes, suspect));  // in the same order
+    }
+    // Boxes that are not finite are left out, suspects or not.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<Box3> odd(64, box(0, 0, 0, 1, 1, 1));
+    odd[0].lo[2] = nan;
+    odd[1].hi[0] = std::numeric_limits<double>::infinity();
+    std::vector<char> suspect(odd.size(), 0);
+    suspect[0] = suspect[2] = 1;
+    const std::vector<BoxPair> found = sorted(detail::overlappingBoxes(odd, suspect));
+    ASSERT_EQ(found.size(), 61u);  // box 2 with every finite box but itself
+    EXPECT_EQ(found.front(), (BoxPair{2, 3}));
+}
+
 // A filter drops pairs as they are found, from both searches; it sees each pair once, i < j.
 TEST(BoxOverlaps, AFilterKeepsOnlyThePairsItWants) {
     const std::vector<Box3> boxes = mixedBoxes(11);
