@@ -52,7 +52,8 @@ using PairFilter = std::function<bool(std::uint32_t, std::uint32_t)>;
 /// corner of their intersection reports it. With suspects only the suspects are entered: every
 /// box looks them up on its level and above, and every suspect looks up the other boxes (in a
 /// table of their own) above its level; where at most one box in 32 is a suspect, the suspects
-/// go into a box tree (box_tree.hpp) that every box looks up instead. For the boxes of a mesh's
+/// go into a box tree (box_tree.hpp) that every box looks up instead, and where more than half
+/// are, all pairs are found and those without a suspect dropped. For the boxes of a mesh's
 /// triangles the work grows with the boxes and the pairs, whatever the mix of sizes (a tree's trunk
 /// beside its twigs, a flat plant's large leaves). Replaced CGAL's box intersection (a segment tree
 /// that sorts the boxes on every level) in session 30: the union's box searches had taken 0.5 s of

@@ -83,13 +83,15 @@ TEST(BoxOverlaps, OnlyPairsWithASuspect) {
     EXPECT_EQ(sorted(detail::overlappingBoxes(boxes, suspect)), expected);
 }
 
-// Few suspects (at most one box in 32) are looked up in a tree of their own: the same pairs.
-TEST(BoxOverlaps, OnlyPairsWithOneOfFewSuspects) {
+// Few suspects (at most one box in 32) are looked up in a tree of their own, many (more than
+// half) filtered from all pairs: the same pairs as any other share.
+TEST(BoxOverlaps, OnlyPairsWithOneOfFewOrManySuspects) {
     const std::vector<Box3> boxes = mixedBoxes(5);
-    for (const std::size_t every : {40, 300}) {
+    for (const std::size_t every : {1, 40, 300}) {
         std::vector<char> suspect(boxes.size(), 0);
         for (std::size_t i = 3; i < boxes.size(); i += every) suspect[i] = 1;
-        suspect[boxes.size() - 1] = 1;  // a wide one
+        suspect[boxes.size() - 1] = 1;                                // a wide one
+        if (every == 1) suspect[10] = suspect[boxes.size() - 2] = 0;  // all but a few
         const std::vector<BoxPair> expected = allPairsOverlapping(boxes, suspect);
         EXPECT_GT(expected.size(), 20u);
         const std::vector<BoxPair> found = detail::overlappingBoxes(boxes, suspect);
