@@ -246,6 +246,7 @@ struct PlaneTable {
     std::vector<PointId> ids;                              // per point
     std::vector<std::vector<std::uint32_t>> lines;         // per point, ascending
     mutable std::vector<std::optional<ExactPoint>> exact;  // built where first needed
+    bool roundingUp = false;  // whether the FPU rounds upward already (UpwardRounding)
 
     PlanePoint add(const PointId& id) {
         const auto bounds = refiner->bounds(id);
@@ -283,6 +284,19 @@ struct PlaneTable {
     }
 };
 
+// Rounding upward for the interval arithmetic of one predicate, unless the caller set it for a
+// whole triangulation (cutTriangle): switching the FPU's mode twice a predicate (stmxcsr,
+// ldmxcsr) had taken most of the orientation test's time.
+class UpwardRounding {
+public:
+    explicit UpwardRounding(bool already) {
+        if (!already) protect_.emplace();
+    }
+
+private:
+    std::optional<CGAL::Protect_FPU_rounding<true>> protect_;
+};
+
 // Geometric traits of CGAL's 2D triangulations over PlanePoints: interval arithmetic first,
 // exact arithmetic where that cannot decide, and points on one known line collinear at once
 // (a cut triangle's edge points, and the points along an intersection, are exactly collinear,
@@ -304,7 +318,7 @@ struct PlaneTraits {
             {
                 // Points on one line have bounds that cannot tell their orientation (or tell
                 // COLLINEAR): the lines are looked up only where the bounds leave it open.
-                CGAL::Protect_FPU_rounding<true> protect;
+                const UpwardRounding protect(table->roundingUp);
                 const auto sign = CGAL::orientationC2(p.x, p.y, q.x, q.y, r.x, r.y);
                 if (CGAL::is_certain(sign)) return CGAL::get_certain(sign);
             }
@@ -319,7 +333,7 @@ struct PlaneTraits {
         CGAL::Oriented_side operator()(const PlanePoint& p, const PlanePoint& q,
                                        const PlanePoint& r, const PlanePoint& s) const {
             {
-                CGAL::Protect_FPU_rounding<true> protect;
+                const UpwardRounding protect(table->roundingUp);
                 const auto side =
                     CGAL::side_of_oriented_circleC2(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y);
                 if (CGAL::is_certain(side)) return CGAL::get_certain(side);
@@ -338,7 +352,7 @@ struct PlaneTraits {
             // fallbacks (39 k) were all such, each building the point's exact coordinates.
             if (p.index == q.index) return CGAL::EQUAL;
             {
-                CGAL::Protect_FPU_rounding<true> protect;
+                const UpwardRounding protect(table->roundingUp);
                 const auto order = axis == 0 ? CGAL::compare(p.x, q.x) : CGAL::compare(p.y, q.y);
                 if (CGAL::is_certain(order)) return CGAL::get_certain(order);
             }
@@ -484,16 +498,24 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
     for (auto& lines : table.lines) std::sort(lines.begin(), lines.end());
 
     PlaneCdt cdt(traits);
-    for (std::uint32_t i = 0; i < at.size(); ++i) {
-        cdt.insert(at[i]);
-        if (cdt.number_of_vertices() != i + 1) throw Degenerate{"two cut points coincide"};
-    }
-    std::vector<PlaneCdt::Vertex_handle> handles(at.size());
-    for (const auto v : cdt.finite_vertex_handles()) handles[v->point().index] = v;
-    try {
-        for (const Local& s : segments) cdt.insert_constraint(handles[s.from], handles[s.to]);
-    } catch (const std::exception&) {
-        throw Degenerate{"intersections that cross where no triangle plane does"};
+    {
+        // The triangulation runs only our predicates, and the exact points they may build
+        // (rationals, bounds from MPFR) do not depend on the rounding mode: one switch to
+        // rounding upward for all of it.
+        const CGAL::Protect_FPU_rounding<true> upward;
+        table.roundingUp = true;
+        for (std::uint32_t i = 0; i < at.size(); ++i) {
+            cdt.insert(at[i]);
+            if (cdt.number_of_vertices() != i + 1) throw Degenerate{"two cut points coincide"};
+        }
+        std::vector<PlaneCdt::Vertex_handle> handles(at.size());
+        for (const auto v : cdt.finite_vertex_handles()) handles[v->point().index] = v;
+        try {
+            for (const Local& s : segments) cdt.insert_constraint(handles[s.from], handles[s.to]);
+        } catch (const std::exception&) {
+            throw Degenerate{"intersections that cross where no triangle plane does"};
+        }
+        table.roundingUp = false;
     }
     const bool flip = orientation(at[0], at[1], at[2]) == CGAL::CLOCKWISE;
     for (const auto f : cdt.finite_face_handles()) {
