@@ -364,7 +364,8 @@ std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
                                       const std::vector<char>& suspect, const PairFilter& keep) {
     const PairFilter all = [](std::uint32_t, std::uint32_t) { return true; };
     const PairFilter& filter = keep ? keep : all;
-    const auto suspects = static_cast<std::size_t>(std::count(suspect.begin(), suspect.end(), 1));
+    const auto suspects = static_cast<std::size_t>(
+        std::count_if(suspect.begin(), suspect.end(), [](char s) { return s != 0; }));
     if (!suspect.empty() && suspects * kFewSuspects <= boxes.size()) {
         return overlappingFewSuspects(boxes, suspect, filter);
     }
