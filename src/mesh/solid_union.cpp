@@ -547,13 +547,22 @@ public:
         for (std::size_t a = 0; a + 1 < first_.size(); ++a) {
             std::sort(edges_.begin() + first_[a], edges_.begin() + first_[a + 1]);
         }
+        cutFaces_.reserve(soup.cuts.size());
         for (const auto& [from, to] : soup.cuts) {
-            for (const auto& [a, b] : {std::pair(from, to), std::pair(to, from)}) {
-                const std::size_t i = indexOf(a, b);
-                if (i != kNoEdge) edges_[i].cut = true;
+            std::array<std::uint32_t, 2> faces{kUnknown, kUnknown};
+            for (int side = 0; side < 2; ++side) {
+                const std::size_t i = side == 0 ? indexOf(from, to) : indexOf(to, from);
+                if (i == kNoEdge) continue;
+                edges_[i].cut = true;
+                faces[static_cast<std::size_t>(side)] = edges_[i].face;
             }
+            cutFaces_.push_back(faces);
         }
     }
+
+    // The faces that use cut edge k of the soup (soup.cuts[k]: from → to) as from → to and as
+    // to → from (kUnknown where none does), found as the edges were marked.
+    const std::array<std::uint32_t, 2>& cutFaces(std::size_t k) const { return cutFaces_[k]; }
 
     // The face that uses the edge a → b, or kUnknown.
     std::uint32_t faceWith(std::uint32_t a, std::uint32_t b) const {
@@ -590,6 +599,7 @@ private:
 
     std::vector<std::uint32_t> first_;  // per vertex: its first edge; then the end
     std::vector<Edge> edges_;           // by start, then end
+    std::vector<std::array<std::uint32_t, 2>> cutFaces_;  // per cut edge (cutFaces)
 };
 
 // Per face of the refined soup: its patch, a connected region of faces joined across edges
@@ -705,9 +715,8 @@ bool windingsAlongCuts(const RefinedSoup& soup, const SoupEdges& edges,
     std::vector<std::array<std::uint32_t, 2>> links;  // inner patch, outer patch
     links.reserve(soup.cuts.size());
     std::vector<std::uint32_t> first(patches + 1, 0);
-    for (const auto& [from, to] : soup.cuts) {
-        const std::uint32_t inner = edges.faceWith(from, to);
-        const std::uint32_t outer = edges.faceWith(to, from);
+    for (std::size_t k = 0; k < soup.cuts.size(); ++k) {
+        const auto [inner, outer] = edges.cutFaces(k);
         if (inner == kUnknown || outer == kUnknown) return false;
         links.push_back({patch[inner], patch[outer]});
         ++first[patch[inner] + 1];
