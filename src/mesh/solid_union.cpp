@@ -1025,38 +1025,19 @@ private:
 
 std::uint64_t reversed(std::uint64_t edge) { return edge << 32 | edge >> 32; }
 
-// Whether the triangles bound closed oriented surfaces: every welded edge is used as often in
-// one direction as in the other (once each way where the surfaces are 2-manifold; k times each
-// way where k surfaces share the edge, as two tips ending at one point from different
-// directions share their caps' spokes), and no triangle has two corners at one position.
-bool closedSurfaces(const std::vector<std::uint32_t>& weld,
-                    const std::vector<std::uint32_t>& indices, const DirectedEdges& table) {
+// Whether no triangle has two corners at one position (a first condition of closed surfaces).
+bool noCollapsedTriangles(const std::vector<std::uint32_t>& weld,
+                          const std::vector<std::uint32_t>& indices) {
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
         const std::uint32_t a = weld[indices[t]], b = weld[indices[t + 1]],
                             c = weld[indices[t + 2]];
         if (a == b || b == c || c == a) return false;
     }
-    // Each edge a → b with a < b is matched with its uses b → a (a lookup in b's bucket, mostly
-    // a cache miss: done once per edge, not from both ends); the edges b → a without a partner
-    // a → b are then the uses left over.
-    const std::vector<DirectedEdge>& edges = table.all();
-    std::size_t matched = 0;
-    for (std::size_t i = 0; i < edges.size();) {
-        std::size_t j = i;
-        while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
-        const std::uint64_t reverse = reversed(edges[i].welded);
-        if (edges[i].welded < reverse) {
-            const auto [first, last] = table.uses(reverse);
-            if (last - first != static_cast<std::ptrdiff_t>(j - i)) return false;
-            matched += 2 * (j - i);
-        }
-        i = j;
-    }
-    return matched == edges.size();
+    return true;
 }
 
-// Edges of closed surfaces (closedSurfaces holds) used more than once in each direction: where
-// k > 1 sheets meet along one edge.
+// Edges of closed surfaces (fanVertices found them closed) used more than once in each direction:
+// where k > 1 sheets meet along one edge.
 std::size_t pinchedEdges(const std::vector<DirectedEdge>& edges) {
     std::size_t pinched = 0;
     for (std::size_t i = 0; i < edges.size();) {
@@ -1075,8 +1056,17 @@ std::size_t pinchedEdges(const std::vector<DirectedEdge>& edges) {
 // b→a of the same input vertices first (the triangles of one fan or cap share their vertices),
 // the rest in order, so the surfaces keep their own vertices there and the move pulls them
 // apart. Numbered in order of first appearance; `count` receives how many.
-std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices,
-                                       const DirectedEdges& table, std::uint32_t* count) {
+//
+// Nothing where the triangles (without collapsed ones: noCollapsedTriangles) do not bound closed
+// oriented surfaces, where a welded edge is not used as often in one direction as in the other
+// (once each way where the surfaces are 2-manifold; k times each way where k surfaces share the
+// edge, as two tips ending at one point from different directions share their caps' spokes).
+// Each edge a → b with a < b is matched with its uses b → a here, where they are paired (a
+// lookup in b's bucket, mostly a cache miss: once per edge), and the edges b → a without a
+// partner are the uses left over.
+std::optional<std::vector<std::uint32_t>> fanVertices(const std::vector<std::uint32_t>& indices,
+                                                      const DirectedEdges& table,
+                                                      std::uint32_t* count) {
     const std::vector<DirectedEdge>& edges = table.all();
     const std::size_t corners = indices.size();
     // Per corner whose edge is a→b: the corner of the use b→a it is paired with; edges shared
@@ -1088,12 +1078,15 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
         paired[c] = paired[twin] = 1;
         twinOf[c] = twin;
     };
+    std::size_t matched = 0;
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
         while (j < edges.size() && edges[j].welded == edges[i].welded) ++j;
         const std::uint64_t reverse = reversed(edges[i].welded);
-        if (edges[i].welded < reverse) {                     // each undirected edge once
-            const auto [first, last] = table.uses(reverse);  // as many as a→b: closed
+        if (edges[i].welded < reverse) {  // each undirected edge once
+            const auto [first, last] = table.uses(reverse);
+            if (last - first != static_cast<std::ptrdiff_t>(j - i)) return std::nullopt;
+            matched += 2 * (j - i);
             if (j - i > 1) shared.emplace_back(i, j);
             for (int pass = 0; pass < 2; ++pass) {  // same input vertices first, then any
                 for (std::size_t k = i; k < j; ++k) {
@@ -1109,6 +1102,7 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
         }
         i = j;
     }
+    if (matched != edges.size()) return std::nullopt;
     std::vector<std::uint32_t> vertex(corners);
     std::vector<std::uint32_t> parent(corners);
     auto number = [&] {
@@ -1162,7 +1156,7 @@ std::vector<std::uint32_t> fanVertices(const std::vector<std::uint32_t>& indices
 struct Surfaces {
     std::vector<std::uint32_t> weld;  ///< per mesh vertex: its position's id
     std::uint32_t positions = 0;      ///< distinct positions
-    bool closed = false;              ///< closedSurfaces holds; fan is filled only then
+    bool closed = false;              ///< closed oriented surfaces (fanVertices); fan only then
     std::vector<std::uint32_t> fan;   ///< per corner: its surface vertex
     std::uint32_t vertices = 0;       ///< surface vertices
     std::size_t pinchedEdges = 0;     ///< edges where several sheets meet (when closed)
@@ -1175,10 +1169,12 @@ Surfaces surfacesOf(std::vector<std::uint32_t> weld, std::uint32_t positions,
     Surfaces s;
     s.weld = std::move(weld);
     s.positions = positions;
+    if (!noCollapsedTriangles(s.weld, indices)) return s;
     const DirectedEdges edges(s.weld, s.positions, indices);
-    s.closed = closedSurfaces(s.weld, indices, edges);
+    std::optional<std::vector<std::uint32_t>> fan = fanVertices(indices, edges, &s.vertices);
+    s.closed = fan.has_value();
     if (s.closed) {
-        s.fan = fanVertices(indices, edges, &s.vertices);
+        s.fan = std::move(*fan);
         s.pinchedEdges = pinchedEdges(edges.all());
     }
     return s;
@@ -1380,7 +1376,7 @@ bool intersectingPairs(const Mesh& mesh, const Surfaces& surfaces,
 // session 35; detail::trianglesCross, exact predicates on the float positions, welded by
 // position, also what the crossing repair counts since session 36): what rounding the
 // cut positions to float left where surfaces only graze each other. In order. `surfaces`:
-// surfacesOf(mesh), closed (the result passed closedSurfaces). Triangles that are not `suspect`
+// surfacesOf(mesh), closed (Surfaces::closed). Triangles that are not `suspect`
 // (input triangles that crossed nothing, where they still are; after moves, those that neither
 // moved nor crossed) do not cross each other, so only pairs with a suspect are tested: the boxes of
 // the suspects against all boxes (detail::overlappingBoxes), then the exact triangle test, on two
