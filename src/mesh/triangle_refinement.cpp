@@ -257,8 +257,7 @@ struct PlaneTable {
         return PlanePoint{bounds[static_cast<std::size_t>(u)], bounds[static_cast<std::size_t>(v)],
                           static_cast<std::uint32_t>(ids.size() - 1)};
     }
-    // The exact projected coordinates, as references into `exact` (copying the rationals had
-    // been most of the exact comparisons' time).
+    // The exact projected coordinates, as references into `exact` (no copies of the rationals).
     struct Exact2 {
         const Exact::FT::ET& u;
         const Exact::FT::ET& v;
