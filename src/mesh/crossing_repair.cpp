@@ -48,7 +48,7 @@ private:
     std::size_t crossingsAround(std::uint32_t v, std::vector<TrianglePair>* pairs = nullptr);
     Box3 reachOf(std::uint32_t f, double grow) const;
     void collectNear(std::uint32_t v);
-    std::size_t crossingsNear(std::uint32_t v) const;
+    std::size_t crossingsNear(std::uint32_t v, std::vector<TrianglePair>* pairs = nullptr) const;
     bool turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const;
     bool separate(std::uint32_t v, std::uint32_t partner);
     bool unpinch(std::uint32_t v);
@@ -148,18 +148,10 @@ Box3 Separator::reachOf(std::uint32_t f, double grow) const {
 // now was, as stored, within maxMove of its box: kReach of maxMove around that box.
 constexpr double kReach = 1.01;
 
-// Crossing pairs with one of v's triangles (appended to `pairs` when given).
+// Crossing pairs with one of v's triangles where it is now (appended to `pairs` when given).
 std::size_t Separator::crossingsAround(std::uint32_t v, std::vector<TrianglePair>* pairs) {
-    std::size_t count = 0;
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
-        const std::uint32_t f = around_[i];
-        tree_.forEachOverlapping(reachOf(f, kReach * maxMove_), [&](std::uint32_t g) {
-            if (g == f || !cross(f, g)) return;
-            ++count;
-            if (pairs != nullptr) pairs->emplace_back(std::min(f, g), std::max(f, g));
-        });
-    }
-    return count;
+    collectNear(v);
+    return crossingsNear(v, pairs);
 }
 
 // Fills near_ for the moves tryMoves tries: v goes at most 2 maxMove from where it is (maxMove
@@ -179,9 +171,10 @@ void Separator::collectNear(std::uint32_t v) {
     nearFirst_.push_back(static_cast<std::uint32_t>(near_.size()));
 }
 
-// crossingsAround(v) for a move of v that collectNear(v) allowed for: the same triangles are
-// tested (those whose boxes come within kReach maxMove of v's triangles).
-std::size_t Separator::crossingsNear(std::uint32_t v) const {
+// The crossing pairs with one of v's triangles (appended to `pairs` when given), for v where
+// collectNear(v) allowed for: the triangles whose boxes, as stored, come within kReach maxMove
+// of v's triangles are tested.
+std::size_t Separator::crossingsNear(std::uint32_t v, std::vector<TrianglePair>* pairs) const {
     std::size_t count = 0;
     for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
         const std::uint32_t f = around_[i];
@@ -189,7 +182,9 @@ std::size_t Separator::crossingsNear(std::uint32_t v) const {
         const std::uint32_t k = i - first_[v];
         for (std::uint32_t n = nearFirst_[k]; n < nearFirst_[k + 1]; ++n) {
             const std::uint32_t g = near_[n];
-            if (boxes_[g].overlaps(reach) && cross(f, g)) ++count;
+            if (!boxes_[g].overlaps(reach) || !cross(f, g)) continue;
+            ++count;
+            if (pairs != nullptr) pairs->emplace_back(std::min(f, g), std::max(f, g));
         }
     }
     return count;
