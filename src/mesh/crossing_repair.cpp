@@ -47,6 +47,7 @@ private:
     bool cross(std::uint32_t f, std::uint32_t g) const;
     std::size_t crossingsAround(std::uint32_t v, std::vector<TrianglePair>* pairs = nullptr);
     Box3 reachOf(std::uint32_t f, double grow) const;
+    Box3 boxNow(std::uint32_t t) const;
     void collectNear(std::uint32_t v);
     std::size_t crossingsNear(std::uint32_t v, std::vector<TrianglePair>* pairs = nullptr) const;
     bool turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const;
@@ -144,6 +145,16 @@ Box3 Separator::reachOf(std::uint32_t f, double grow) const {
     return box;
 }
 
+// Triangle t's box where it is now.
+Box3 Separator::boxNow(std::uint32_t t) const {
+    Box3 box;
+    for (const std::uint32_t v : s_.triangles[t]) {
+        const Vec3f& p = s_.points[v];
+        box.add({p.x(), p.y(), p.z()});
+    }
+    return box;
+}
+
 // Every vertex stays within maxMove of where it was, so a triangle meeting one of v's triangles
 // now was, as stored, within maxMove of its box: kReach of maxMove around that box.
 constexpr double kReach = 1.01;
@@ -172,17 +183,19 @@ void Separator::collectNear(std::uint32_t v) {
 }
 
 // The crossing pairs with one of v's triangles (appended to `pairs` when given), for v where
-// collectNear(v) allowed for: the triangles whose boxes, as stored, come within kReach maxMove
-// of v's triangles are tested.
+// collectNear(v) allowed for: of the triangles collected, those whose boxes where they are now
+// meet the box of one of v's triangles are tested (since session 38; before, those whose stored
+// boxes came within kReach maxMove of it: ABOP 1.24a's first repair took 88 ms instead of 67,
+// 1.6 M pairs tested for 8 k moves tried, the same moves).
 std::size_t Separator::crossingsNear(std::uint32_t v, std::vector<TrianglePair>* pairs) const {
     std::size_t count = 0;
     for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
         const std::uint32_t f = around_[i];
-        const Box3 reach = reachOf(f, kReach * maxMove_);
+        const Box3 box = boxNow(f);
         const std::uint32_t k = i - first_[v];
         for (std::uint32_t n = nearFirst_[k]; n < nearFirst_[k + 1]; ++n) {
             const std::uint32_t g = near_[n];
-            if (!boxes_[g].overlaps(reach) || !cross(f, g)) continue;
+            if (!boxNow(g).overlaps(box) || !cross(f, g)) continue;
             ++count;
             if (pairs != nullptr) pairs->emplace_back(std::min(f, g), std::max(f, g));
         }
