@@ -19,6 +19,7 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_2.h>
 #include <CGAL/intersections.h>
 
@@ -27,7 +28,9 @@
 #include <compare>
 #include <exception>
 #include <limits>
+#include <numeric>
 #include <optional>
+#include <span>
 
 #include "fixed_hash.hpp"
 #include "index_hash_table.hpp"
@@ -222,11 +225,14 @@ private:
     const std::vector<std::uint32_t>& fan_;
 };
 
-// One cut triangle's pieces, over local vertices.
+// One cut triangle's pieces, over local vertices, and its regions (regionsOf).
 struct TriangleCut {
     std::vector<PointId> points;
     std::vector<std::array<std::uint32_t, 3>> pieces;
     std::vector<RefinedTriangles::Cut> cuts;
+    std::vector<std::uint32_t> region;          // per piece: its region, numbered from 0
+    std::vector<int> winding;                   // per region: relative to region 0's
+    std::vector<RefinedTriangles::Side> sides;  // region: local
     const char* failure = nullptr;
 };
 
@@ -392,9 +398,10 @@ struct PlaneTraits {
     Construct_triangle_2 construct_triangle_2_object() const { return {}; }
 };
 
-using PlaneTds =
-    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<PlaneTraits>,
-                                         CGAL::Constrained_triangulation_face_base_2<PlaneTraits>>;
+using PlaneTds = CGAL::Triangulation_data_structure_2<
+    CGAL::Triangulation_vertex_base_2<PlaneTraits>,
+    CGAL::Constrained_triangulation_face_base_2<
+        PlaneTraits, CGAL::Triangulation_face_base_with_info_2<std::uint32_t, PlaneTraits>>>;
 using PlaneCdt = CGAL::Constrained_Delaunay_triangulation_2<
     PlaneTraits, PlaneTds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
 
@@ -414,10 +421,45 @@ std::uint32_t PlaneTable::intersectionThrough(std::uint32_t a, std::uint32_t b) 
     return found;
 }
 
+// A step from region `from` of a cut triangle across a cut into region `to`, where the winding
+// number changes by `change`.
+struct RegionStep {
+    std::uint32_t from, to;
+    int change;
+};
+
+constexpr int kUnsetWinding = std::numeric_limits<int>::min();
+
+// Fills `winding` (per region, kUnsetWinding) with the winding numbers relative to region 0's,
+// breadth first along `steps` (reordered).
+void windingsAcross(std::vector<RegionStep>& steps, std::vector<int>& winding) {
+    std::sort(steps.begin(), steps.end(),
+              [](const RegionStep& a, const RegionStep& b) { return a.from < b.from; });
+    winding[0] = 0;
+    std::vector<std::uint32_t> queue{0};
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+        const std::uint32_t r = queue[q];
+        auto step =
+            std::lower_bound(steps.begin(), steps.end(), r,
+                             [](const RegionStep& s, std::uint32_t v) { return s.from < v; });
+        for (; step != steps.end() && step->from == r; ++step) {
+            const int w = winding[r] + step->change;
+            if (winding[step->to] == kUnsetWinding) {
+                winding[step->to] = w;
+                queue.push_back(step->to);
+            } else if (winding[step->to] != w) {
+                throw Degenerate{"the cuts of a triangle disagree"};
+            }
+        }
+    }
+    if (queue.size() != winding.size())
+        throw Degenerate{"a region of a cut triangle no cut reaches"};
+}
+
 // Cuts triangle t along the segments through it (`through`: each with the other triangle of
 // its pair), triangulated in the axis plane where t is largest.
 void cutTriangle(const Refiner& refiner, std::uint32_t t,
-                 const std::vector<std::pair<Segment, std::uint32_t>>& through, TriangleCut& cut) {
+                 std::span<const std::pair<Segment, std::uint32_t>> through, TriangleCut& cut) {
     const std::uint32_t* c = refiner.corners(t);
     PlaneTable table;
     table.refiner = &refiner;
@@ -520,8 +562,42 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
     for (const auto f : cdt.finite_face_handles()) {
         const std::uint32_t a = f->vertex(0)->point().index, b = f->vertex(1)->point().index,
                             d = f->vertex(2)->point().index;
+        f->info() = static_cast<std::uint32_t>(cut.pieces.size());
         cut.pieces.push_back(flip ? std::array{a, d, b} : std::array{a, b, d});
     }
+    // The regions: pieces joined across the edges that are not cut, numbered in the order of their
+    // first pieces; the edges on t's sides (the infinite face across) as their pieces use them.
+    std::vector<std::uint32_t> parent(cut.pieces.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto root = [&](std::uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const auto f : cdt.finite_face_handles()) {
+        for (int i = 0; i < 3; ++i) {
+            const auto g = f->neighbor(i);
+            if (cdt.is_infinite(g)) {
+                const std::uint32_t a = f->vertex(PlaneCdt::ccw(i))->point().index;
+                const std::uint32_t b = f->vertex(PlaneCdt::cw(i))->point().index;
+                cut.sides.push_back({flip ? b : a, flip ? a : b, f->info()});  // its piece for now
+            } else if (!f->is_constrained(i) && f->info() < g->info()) {
+                parent[root(g->info())] = root(f->info());
+            }
+        }
+    }
+    {
+        std::vector<std::uint32_t> number(cut.pieces.size(), kNone);  // per root
+        cut.region.resize(cut.pieces.size());
+        std::uint32_t regions = 0;
+        for (std::uint32_t f = 0; f < cut.pieces.size(); ++f) {
+            std::uint32_t& n = number[root(f)];
+            if (n == kNone) n = regions++;
+            cut.region[f] = n;
+        }
+        cut.winding.assign(regions, kUnsetWinding);
+    }
+    for (RefinedTriangles::Side& side : cut.sides) side.region = cut.region[side.region];
+    std::vector<RegionStep> steps;  // across the cuts, both ways
     // The cut edges, directed as the piece on the inner side of the other triangle uses them
     // (RefinedTriangles::Cut). Face f lies left of its edge a → b opposite vertex i (faces are
     // counterclockwise in the plane); a corner of t off the edge's line is on f's side or not
@@ -544,9 +620,14 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
         const bool inner = (side == CGAL::NEGATIVE) == (turn == CGAL::LEFT_TURN);
         const bool forward = inner != flip;  // f's piece uses a → b unless flipped
         cut.cuts.push_back(forward ? RefinedTriangles::Cut{a, b} : RefinedTriangles::Cut{b, a});
+        const std::uint32_t mine = cut.region[f->info()];
+        const std::uint32_t across = cut.region[f->neighbor(i)->info()];
+        steps.push_back({across, mine, inner ? 1 : -1});
+        steps.push_back({mine, across, inner ? -1 : 1});
     }
     // CGAL's edge iterator reports an edge from the face at the lower address: sorted here.
     std::sort(cut.cuts.begin(), cut.cuts.end());
+    windingsAcross(steps, cut.winding);
 }
 
 // A vertex of the refined triangles: a named point on one sheet. A point where an edge passes
@@ -617,28 +698,35 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
         if (failure) return failure;
     }
 
-    // The cut triangles, ascending, each with the segments through it.
-    std::vector<std::uint32_t> cutTriangles;
+    // The cut triangles, ascending, each with the segments through it (in the order of the
+    // pairs): a counting sort of the pairs by triangle.
+    const std::size_t triangles = fan.size() / 3;
+    std::vector<std::uint32_t> slot(triangles + 1, 0);  // per triangle + 1: its segments
     for (const auto& [s, t] : pairs) {
-        cutTriangles.push_back(s);
-        cutTriangles.push_back(t);
+        ++slot[s + 1];
+        ++slot[t + 1];
     }
-    std::sort(cutTriangles.begin(), cutTriangles.end());
-    cutTriangles.erase(std::unique(cutTriangles.begin(), cutTriangles.end()), cutTriangles.end());
-    auto cutIndex = [&](std::uint32_t t) {
-        return static_cast<std::size_t>(
-            std::lower_bound(cutTriangles.begin(), cutTriangles.end(), t) - cutTriangles.begin());
+    std::vector<std::uint32_t> cutTriangles;
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        if (slot[t + 1] > 0) cutTriangles.push_back(t);
+    }
+    std::partial_sum(slot.begin(), slot.end(), slot.begin());
+    std::vector<std::pair<Segment, std::uint32_t>> through(slot.back());
+    {
+        std::vector<std::uint32_t> next(slot.begin(), slot.end() - 1);
+        for (std::size_t i = 0; i < pairs.size(); ++i) {
+            const auto [s, t] = pairs[i];
+            through[next[s]++] = {segments[i], t};
+            through[next[t]++] = {segments[i], s};
+        }
+    }
+    auto throughTriangle = [&](std::uint32_t t) {
+        return std::span(through).subspan(slot[t], slot[t + 1] - slot[t]);
     };
-    std::vector<std::vector<std::pair<Segment, std::uint32_t>>> through(cutTriangles.size());
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-        const auto [s, t] = pairs[i];
-        through[cutIndex(s)].emplace_back(segments[i], t);
-        through[cutIndex(t)].emplace_back(segments[i], s);
-    }
     std::vector<TriangleCut> cuts(cutTriangles.size());
     forEachOnCores(cutTriangles.size(), [&](std::size_t i) {
         try {
-            cutTriangle(refiner, cutTriangles[i], through[i], cuts[i]);
+            cutTriangle(refiner, cutTriangles[i], throughTriangle(cutTriangles[i]), cuts[i]);
         } catch (const Degenerate& d) {
             cuts[i].failure = d.why;
         } catch (const std::exception&) {
@@ -655,6 +743,20 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
     IndexHashTable vertexOf(cutPoints);  // indices into newVertices
     std::vector<VertexKey> newVertices;
     newVertices.reserve(cutPoints);
+    {
+        std::size_t pieces = 0, cutEdges = 0, regions = 0, sides = 0;
+        for (const TriangleCut& cut : cuts) {
+            pieces += cut.pieces.size();
+            cutEdges += cut.cuts.size();
+            regions += cut.winding.size();
+            sides += cut.sides.size();
+        }
+        out.pieces.reserve(pieces);
+        out.pieceRegion.reserve(pieces);
+        out.cuts.reserve(cutEdges);
+        out.regions.reserve(regions);
+        out.sides.reserve(sides);
+    }
     std::vector<std::uint32_t> global;
     for (std::size_t i = 0; i < cuts.size(); ++i) {
         const TriangleCut& cut = cuts[i];
@@ -672,11 +774,18 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
             if (vertex == next) newVertices.push_back(key);
             global.push_back(inputPoints + vertex);
         }
-        for (const auto& piece : cut.pieces) {
+        const auto firstRegion = static_cast<std::uint32_t>(out.regions.size());
+        for (std::size_t f = 0; f < cut.pieces.size(); ++f) {
+            const auto& piece = cut.pieces[f];
             out.pieces.push_back(
                 {cutTriangles[i], {global[piece[0]], global[piece[1]], global[piece[2]]}});
+            out.pieceRegion.push_back(firstRegion + cut.region[f]);
         }
         for (const auto& [a, b] : cut.cuts) out.cuts.push_back({global[a], global[b]});
+        for (const int w : cut.winding) out.regions.push_back({cutTriangles[i], w});
+        for (const auto& [a, b, r] : cut.sides) {
+            out.sides.push_back({global[a], global[b], firstRegion + r});
+        }
     }
     double scale = 0;
     for (const RefinementPoint& p : points) {

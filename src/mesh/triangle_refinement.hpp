@@ -28,9 +28,25 @@ struct RefinedTriangles {
         std::uint32_t from, to;
         auto operator<=>(const Cut&) const = default;
     };
+    /// A region of a cut triangle: its pieces joined across edges that are not cut, between
+    /// the cuts, with its winding number just outside relative to the triangle's first region
+    /// (across a cut, the inner side has one more than the outer).
+    struct Region {
+        std::uint32_t origin;
+        int winding;
+    };
+    /// An edge of a piece on a side of its cut triangle (from → to as the piece uses it): the
+    /// face across it, of the neighbouring triangle on the same sheet, has the same winding
+    /// number as the piece's region.
+    struct Side {
+        std::uint32_t from, to, region;
+    };
     std::vector<RefinementPoint> newPoints;
     std::vector<Piece> pieces;
+    std::vector<std::uint32_t> pieceRegion;  ///< per piece: its region
     std::vector<Cut> cuts;
+    std::vector<Region> regions;  ///< by cut triangle, ascending
+    std::vector<Side> sides;
 };
 
 /// Cuts the triangles of closed surfaces (corners `fan`, three per triangle, at `points`) that
@@ -49,6 +65,13 @@ struct RefinedTriangles {
 /// refinement with a message (returned; nullptr on success) so that the caller can move the
 /// corners and try again. Cut triangles are refined on two cores; the result does not depend
 /// on the threads.
+///
+/// Each cut triangle's pieces are also grouped into regions (joined across the edges that are
+/// not cut), each with its winding number relative to the triangle's first region, read off
+/// the triangulation as the cut edges' directions are (since session 38: the solid union
+/// classifies regions instead of pieces; ABOP 1.24a has 576 k pieces in 188 k regions), and
+/// the pieces' edges on the triangles' sides are listed with their regions, so that a caller
+/// can carry winding numbers from triangle to triangle.
 ///
 /// Replaced CGAL's autorefinement (Polygon Mesh Processing, experimental::autorefine, 5.5) in
 /// session 31, which took 10–14 s of the 13–17 s union of a dense plant (docs/welded.md).

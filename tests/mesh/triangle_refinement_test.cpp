@@ -180,6 +180,37 @@ void expectValidRefinement(const Surfaces& s, const Refined& r) {
         EXPECT_EQ(boxesHolding(faceUsing.at({a, b})), boxesHolding(faceUsing.at({b, a})) + 1)
             << "cut " << a << " → " << b;
     }
+
+    // Regions: the boxes around each piece's centre differ from those around a piece of its
+    // triangle's first region by the region's winding number relative to that one; each side
+    // edge is a piece's of its region, with the face across (another triangle's, on the same
+    // surface) as deep in the other boxes.
+    const std::vector<RefinedTriangles::Region>& regions = r.result.regions;
+    ASSERT_EQ(r.result.pieceRegion.size(), r.result.pieces.size());
+    const std::size_t uncut = r.faces.size() - r.result.pieces.size();
+    std::map<std::uint32_t, std::pair<std::uint32_t, long>> firstRegion;  // per triangle
+    for (std::size_t i = 0; i < r.result.pieces.size(); ++i) {
+        const std::uint32_t region = r.result.pieceRegion[i];
+        ASSERT_LT(region, regions.size());
+        EXPECT_EQ(regions[region].origin, r.result.pieces[i].origin);
+        const long holding = boxesHolding(uncut + i);
+        const auto [first, added] = firstRegion.try_emplace(r.result.pieces[i].origin, region,
+                                                            holding - regions[region].winding);
+        if (!added) {
+            EXPECT_EQ(holding - regions[region].winding, first->second.second)
+                << "piece " << i << " of triangle " << r.result.pieces[i].origin;
+        }
+    }
+    EXPECT_FALSE(r.result.sides.empty());
+    for (const auto& [a, b, region] : r.result.sides) {
+        ASSERT_TRUE(faceUsing.count({a, b}) && faceUsing.count({b, a}));
+        const std::size_t piece = faceUsing.at({a, b});
+        ASSERT_GE(piece, uncut);
+        EXPECT_EQ(r.result.pieceRegion[piece - uncut], region);
+        const std::size_t across = faceUsing.at({b, a});
+        EXPECT_NE(r.faces[across], r.faces[piece]);
+        EXPECT_EQ(boxesHolding(across), boxesHolding(piece)) << "side " << a << " → " << b;
+    }
 }
 
 TEST(TriangleRefinement, TwoTurnedBoxesThroughEachOther) {
