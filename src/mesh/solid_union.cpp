@@ -66,7 +66,6 @@
 #include <optional>
 #include <span>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 #include "box_overlaps.hpp"
@@ -651,12 +650,11 @@ const char* classifyRegions(const std::vector<Point>& points, const std::vector<
                             std::vector<char>& keepRegion) {
     const auto triangles = static_cast<std::uint32_t>(cut.size());
     const std::size_t nodes = triangles + refined.regions.size();  // region r: triangles + r
-    // The directed edges on the nodes' sides, bucketed by their start (a counting sort), each
-    // bucket sorted by the end.
+    // The directed edges on the nodes' sides, bucketed by their start (a counting sort; a
+    // bucket holds a vertex's few edges, each sheet's at most once each way).
     const std::size_t vertexCount = points.size() + refined.newPoints.size();
     struct Edge {
         std::uint32_t end, node;
-        auto operator<=>(const Edge&) const = default;
     };
     std::vector<std::uint32_t> first(vertexCount + 1, 0);
     auto forEachSide = [&](auto visit) {
@@ -676,17 +674,15 @@ const char* classifyRegions(const std::vector<Point>& points, const std::vector<
             edges[next[a]++] = {b, node};
         });
     }
-    for (std::size_t a = 0; a < vertexCount; ++a) {
-        std::sort(edges.begin() + first[a], edges.begin() + first[a + 1]);
-    }
     RelativeWindings windings(nodes);
     for (std::uint32_t a = 0; a < vertexCount; ++a) {
         for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {
             const std::uint32_t b = edges[i].end;
             if (b < a) continue;  // each edge once, from its lower end
             const auto last = edges.begin() + first[b + 1];
-            const auto twin = std::lower_bound(edges.begin() + first[b], last, Edge{a, 0});
-            if (twin == last || twin->end != a) return "an edge of the refined surfaces alone";
+            const auto twin = std::find_if(edges.begin() + first[b], last,
+                                           [&](const Edge& e) { return e.end == a; });
+            if (twin == last) return "an edge of the refined surfaces alone";
             if (!windings.link(edges[i].node, twin->node, 0)) {
                 return "the winding numbers across the sides disagree";
             }

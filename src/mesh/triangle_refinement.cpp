@@ -736,57 +736,70 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
         }
     });
 
-    // Vertices: the input's corners keep their index; the others are numbered as they come.
-    const auto inputPoints = static_cast<std::uint32_t>(points.size());
-    std::size_t cutPoints = 0;  // with repeats: an upper bound of the vertices
-    for (const TriangleCut& cut : cuts) cutPoints += cut.points.size() - 3;
-    IndexHashTable vertexOf(cutPoints);  // indices into newVertices
-    std::vector<VertexKey> newVertices;
-    newVertices.reserve(cutPoints);
-    {
-        std::size_t pieces = 0, cutEdges = 0, regions = 0, sides = 0;
-        for (const TriangleCut& cut : cuts) {
-            pieces += cut.pieces.size();
-            cutEdges += cut.cuts.size();
-            regions += cut.winding.size();
-            sides += cut.sides.size();
-        }
-        out.pieces.reserve(pieces);
-        out.pieceRegion.reserve(pieces);
-        out.cuts.reserve(cutEdges);
-        out.regions.reserve(regions);
-        out.sides.reserve(sides);
-    }
-    std::vector<std::uint32_t> global;
+    // Where each cut triangle's points, pieces, cut edges, regions and sides go in the output.
+    struct Offsets {
+        std::size_t points = 0, pieces = 0, cuts = 0, regions = 0, sides = 0;
+    };
+    std::vector<Offsets> offsets(cuts.size() + 1);
     for (std::size_t i = 0; i < cuts.size(); ++i) {
         const TriangleCut& cut = cuts[i];
         if (cut.failure) return cut.failure;
-        global.clear();
-        for (const PointId& id : cut.points) {
+        const Offsets& o = offsets[i];
+        offsets[i + 1] = {o.points + cut.points.size(), o.pieces + cut.pieces.size(),
+                          o.cuts + cut.cuts.size(), o.regions + cut.winding.size(),
+                          o.sides + cut.sides.size()};
+    }
+    // Vertices: the input's corners keep their index; the others are numbered as they come (one
+    // thread: the order of the cut triangles), the rest is written on all cores.
+    const auto inputPoints = static_cast<std::uint32_t>(points.size());
+    const std::size_t cutPoints = offsets.back().points;  // with repeats and corners
+    IndexHashTable vertexOf(cutPoints);                   // indices into newVertices
+    std::vector<VertexKey> newVertices;
+    newVertices.reserve(cutPoints);
+    std::vector<std::uint32_t> global(cutPoints);  // per point of each cut triangle in turn
+    for (std::size_t i = 0; i < cuts.size(); ++i) {
+        std::uint32_t* vertex = &global[offsets[i].points];
+        for (const PointId& id : cuts[i].points) {
             if (id.kind == PointId::corner) {
-                global.push_back(id.of[0]);
+                *vertex++ = id.of[0];
                 continue;
             }
             const VertexKey key{id, sheetOf(id, cutTriangles[i])};
             const auto next = static_cast<std::uint32_t>(newVertices.size());
-            const std::uint32_t vertex = vertexOf.findOrAdd(
+            const std::uint32_t found = vertexOf.findOrAdd(
                 VertexKeyHash{}(key), next, [&](std::uint32_t j) { return newVertices[j] == key; });
-            if (vertex == next) newVertices.push_back(key);
-            global.push_back(inputPoints + vertex);
-        }
-        const auto firstRegion = static_cast<std::uint32_t>(out.regions.size());
-        for (std::size_t f = 0; f < cut.pieces.size(); ++f) {
-            const auto& piece = cut.pieces[f];
-            out.pieces.push_back(
-                {cutTriangles[i], {global[piece[0]], global[piece[1]], global[piece[2]]}});
-            out.pieceRegion.push_back(firstRegion + cut.region[f]);
-        }
-        for (const auto& [a, b] : cut.cuts) out.cuts.push_back({global[a], global[b]});
-        for (const int w : cut.winding) out.regions.push_back({cutTriangles[i], w});
-        for (const auto& [a, b, r] : cut.sides) {
-            out.sides.push_back({global[a], global[b], firstRegion + r});
+            if (found == next) newVertices.push_back(key);
+            *vertex++ = inputPoints + found;
         }
     }
+    const Offsets& total = offsets.back();
+    out.pieces.resize(total.pieces);
+    out.pieceRegion.resize(total.pieces);
+    out.cuts.resize(total.cuts);
+    out.regions.resize(total.regions);
+    out.sides.resize(total.sides);
+    forEachOnCores(cuts.size(), [&](std::size_t i) {
+        const TriangleCut& cut = cuts[i];
+        const Offsets& o = offsets[i];
+        const std::uint32_t* at = &global[o.points];
+        const auto firstRegion = static_cast<std::uint32_t>(o.regions);
+        for (std::size_t f = 0; f < cut.pieces.size(); ++f) {
+            const auto& piece = cut.pieces[f];
+            out.pieces[o.pieces + f] = {cutTriangles[i],
+                                        {at[piece[0]], at[piece[1]], at[piece[2]]}};
+            out.pieceRegion[o.pieces + f] = firstRegion + cut.region[f];
+        }
+        for (std::size_t k = 0; k < cut.cuts.size(); ++k) {
+            out.cuts[o.cuts + k] = {at[cut.cuts[k].from], at[cut.cuts[k].to]};
+        }
+        for (std::size_t r = 0; r < cut.winding.size(); ++r) {
+            out.regions[o.regions + r] = {cutTriangles[i], cut.winding[r]};
+        }
+        for (std::size_t k = 0; k < cut.sides.size(); ++k) {
+            const RefinedTriangles::Side& side = cut.sides[k];
+            out.sides[o.sides + k] = {at[side.from], at[side.to], firstRegion + side.region};
+        }
+    });
     double scale = 0;
     for (const RefinementPoint& p : points) {
         scale = std::max({scale, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
