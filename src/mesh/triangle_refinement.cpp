@@ -229,7 +229,6 @@ private:
 struct TriangleCut {
     std::vector<PointId> points;
     std::vector<std::array<std::uint32_t, 3>> pieces;
-    std::vector<RefinedTriangles::Cut> cuts;
     std::vector<std::uint32_t> region;          // per piece: its region, numbered from 0
     std::vector<int> winding;                   // per region: relative to region 0's
     std::vector<RefinedTriangles::Side> sides;  // region: local
@@ -598,8 +597,8 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
     }
     for (RefinedTriangles::Side& side : cut.sides) side.region = cut.region[side.region];
     std::vector<RegionStep> steps;  // across the cuts, both ways
-    // The cut edges, directed as the piece on the inner side of the other triangle uses them
-    // (RefinedTriangles::Cut). Face f lies left of its edge a → b opposite vertex i (faces are
+    // Across each cut edge, the piece on the inner side of the other triangle has one more
+    // (RefinedTriangles::Region). Face f lies left of its edge a → b opposite vertex i (faces are
     // counterclockwise in the plane); a corner of t off the edge's line is on f's side or not
     // (in the plane), and on the inner or the outer side of the other triangle (exact, on the
     // input corners), which tells f's side without the cut points' coordinates.
@@ -618,15 +617,11 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
                                                          refiner.point(o[2]), refiner.point(c[k]));
         if (k == 3 || side == CGAL::COPLANAR) throw Degenerate{"a corner on an intersection"};
         const bool inner = (side == CGAL::NEGATIVE) == (turn == CGAL::LEFT_TURN);
-        const bool forward = inner != flip;  // f's piece uses a → b unless flipped
-        cut.cuts.push_back(forward ? RefinedTriangles::Cut{a, b} : RefinedTriangles::Cut{b, a});
         const std::uint32_t mine = cut.region[f->info()];
         const std::uint32_t across = cut.region[f->neighbor(i)->info()];
         steps.push_back({across, mine, inner ? 1 : -1});
         steps.push_back({mine, across, inner ? -1 : 1});
     }
-    // CGAL's edge iterator reports an edge from the face at the lower address: sorted here.
-    std::sort(cut.cuts.begin(), cut.cuts.end());
     windingsAcross(steps, cut.winding);
 }
 
@@ -736,9 +731,9 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
         }
     });
 
-    // Where each cut triangle's points, pieces, cut edges, regions and sides go in the output.
+    // Where each cut triangle's points, pieces, regions and sides go in the output.
     struct Offsets {
-        std::size_t points = 0, pieces = 0, cuts = 0, regions = 0, sides = 0;
+        std::size_t points = 0, pieces = 0, regions = 0, sides = 0;
     };
     std::vector<Offsets> offsets(cuts.size() + 1);
     for (std::size_t i = 0; i < cuts.size(); ++i) {
@@ -746,8 +741,7 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
         if (cut.failure) return cut.failure;
         const Offsets& o = offsets[i];
         offsets[i + 1] = {o.points + cut.points.size(), o.pieces + cut.pieces.size(),
-                          o.cuts + cut.cuts.size(), o.regions + cut.winding.size(),
-                          o.sides + cut.sides.size()};
+                          o.regions + cut.winding.size(), o.sides + cut.sides.size()};
     }
     // Vertices: the input's corners keep their index; the others are numbered as they come (one
     // thread: the order of the cut triangles), the rest is written on all cores.
@@ -775,7 +769,6 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
     const Offsets& total = offsets.back();
     out.pieces.resize(total.pieces);
     out.pieceRegion.resize(total.pieces);
-    out.cuts.resize(total.cuts);
     out.regions.resize(total.regions);
     out.sides.resize(total.sides);
     forEachOnCores(cuts.size(), [&](std::size_t i) {
@@ -788,9 +781,6 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
             out.pieces[o.pieces + f] = {cutTriangles[i],
                                         {at[piece[0]], at[piece[1]], at[piece[2]]}};
             out.pieceRegion[o.pieces + f] = firstRegion + cut.region[f];
-        }
-        for (std::size_t k = 0; k < cut.cuts.size(); ++k) {
-            out.cuts[o.cuts + k] = {at[cut.cuts[k].from], at[cut.cuts[k].to]};
         }
         for (std::size_t r = 0; r < cut.winding.size(); ++r) {
             out.regions[o.regions + r] = {cutTriangles[i], cut.winding[r]};

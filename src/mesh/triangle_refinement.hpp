@@ -15,22 +15,17 @@ namespace ramus::detail {
 using RefinementPoint = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 
 /// The pieces of the cut triangles: new points (numbered after the input's), the pieces with
-/// the input triangle each came from, and the cut edges.
+/// the input triangle each came from, and the regions they make in it.
 struct RefinedTriangles {
     struct Piece {
         std::uint32_t origin;
         std::array<std::uint32_t, 3> corners;
     };
-    /// An edge of pieces along an intersection, from vertex `from` to `to` as the piece on the
-    /// inner side of the other triangle (the side its normal points away from) uses it; the
-    /// piece on the outer side uses it from `to` to `from`.
-    struct Cut {
-        std::uint32_t from, to;
-        auto operator<=>(const Cut&) const = default;
-    };
     /// A region of a cut triangle: its pieces joined across edges that are not cut, between
-    /// the cuts, with its winding number just outside relative to the triangle's first region
-    /// (across a cut, the inner side has one more than the outer).
+    /// the cuts (edges of pieces along an intersection), with its winding number just outside
+    /// relative to the triangle's first region: across a cut, the piece on the inner side of
+    /// the other triangle (the side its normal points away from) has one more than the piece on
+    /// the outer side.
     struct Region {
         std::uint32_t origin;
         int winding;
@@ -44,8 +39,7 @@ struct RefinedTriangles {
     std::vector<RefinementPoint> newPoints;
     std::vector<Piece> pieces;
     std::vector<std::uint32_t> pieceRegion;  ///< per piece: its region
-    std::vector<Cut> cuts;
-    std::vector<Region> regions;  ///< by cut triangle, ascending
+    std::vector<Region> regions;             ///< by cut triangle, ascending
     std::vector<Side> sides;
 };
 
@@ -66,12 +60,13 @@ struct RefinedTriangles {
 /// corners and try again. Cut triangles are refined on two cores; the result does not depend
 /// on the threads.
 ///
-/// Each cut triangle's pieces are also grouped into regions (joined across the edges that are
-/// not cut), each with its winding number relative to the triangle's first region, read off
-/// the triangulation as the cut edges' directions are (since session 38: the solid union
-/// classifies regions instead of pieces; ABOP 1.24a has 576 k pieces in 188 k regions), and
-/// the pieces' edges on the triangles' sides are listed with their regions, so that a caller
-/// can carry winding numbers from triangle to triangle.
+/// Each cut triangle's pieces are grouped into regions (joined across the edges that are not
+/// cut), each with its winding number relative to the triangle's first region, read off the
+/// triangulation's adjacency and the sides of the cut edges (since session 38, when the solid
+/// union went from classifying pieces to classifying regions, instead of the directed cut edges:
+/// ABOP 1.24a has 576 k pieces in 188 k regions), and the pieces' edges on the triangles' sides
+/// are listed with their regions, so that a caller can carry winding numbers from triangle to
+/// triangle.
 ///
 /// Replaced CGAL's autorefinement (Polygon Mesh Processing, experimental::autorefine, 5.5) in
 /// session 31, which took 10–14 s of the 13–17 s union of a dense plant (docs/welded.md).
