@@ -718,13 +718,13 @@ const char* classifyRegions(const std::vector<Point>& points, const std::vector<
 #endif
         }
     }
+    auto at = [&](std::uint32_t v) -> const Point& {  // a refined vertex's point
+        return v < points.size() ? points[v] : refined.newPoints[v - points.size()];
+    };
     // A cast region's largest piece.
     std::vector<std::uint32_t> largest(refined.regions.size(), kUnknown);
     {
         std::vector<double> area(refined.regions.size(), -1.0);
-        auto at = [&](std::uint32_t v) -> const Point& {
-            return v < points.size() ? points[v] : refined.newPoints[v - points.size()];
-        };
         for (std::uint32_t f = 0; f < refined.pieces.size(); ++f) {
             const std::uint32_t r = refined.pieceRegion[f];
             if (!cast[triangles + r]) continue;
@@ -755,10 +755,7 @@ const char* classifyRegions(const std::vector<Point>& points, const std::vector<
         } else {
             const RefinedSoup::Face& piece = refined.pieces[largest[x - triangles]];
             origin = piece.origin;
-            for (std::size_t k = 0; k < 3; ++k) {
-                const std::uint32_t v = piece.corners[k];
-                corners[k] = v < points.size() ? points[v] : refined.newPoints[v - points.size()];
-            }
+            for (std::size_t k = 0; k < 3; ++k) corners[k] = at(piece.corners[k]);
         }
         const Point centre = CGAL::centroid(corners[0], corners[1], corners[2]);
         Vector normal = CGAL::cross_product(corners[1] - corners[0], corners[2] - corners[0]);
