@@ -225,7 +225,7 @@ private:
     const std::vector<std::uint32_t>& fan_;
 };
 
-// One cut triangle's pieces, over local vertices, and its regions (regionsOf).
+// One cut triangle's pieces, over local vertices, and its regions (cutTriangle).
 struct TriangleCut {
     std::vector<PointId> points;
     std::vector<std::array<std::uint32_t, 3>> pieces;
