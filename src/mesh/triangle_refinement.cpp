@@ -4,12 +4,13 @@
 //    arise (an edge of one through the inside of the other, or the corner both share), from
 //    exact orientation predicates on the input corners.
 // 2. Per cut triangle: the segments in it; where two of them cross, the point common to three
-//    triangles; then a constrained Delaunay triangulation of the triangle's corners and all
-//    these points, projected on the axis plane where the triangle is largest, with every
-//    segment as a constraint. Its predicates decide on interval bounds of the points (interval
-//    arithmetic on the input), else on their exact coordinates (CGAL's Epeck, built where first
-//    needed), and know which points lie on one line (PlaneTraits). Points on the triangle's
-//    edges are exactly on them, so the triangulation covers the triangle exactly.
+//    triangles; then a constrained Delaunay triangulation (ConstrainedTriangulation) of the
+//    triangle's corners and all these points, projected on the axis plane where the triangle is
+//    largest, with every segment as a constraint. Its predicates decide on interval bounds of
+//    the points (interval arithmetic on the input), else on their exact coordinates (CGAL's
+//    Epeck, built where first needed), and know which points lie on one line (PlaneTable).
+//    Points on the triangle's edges are exactly on them, so the triangulation covers the
+//    triangle exactly.
 // 3. Vertices: one per named point and sheet (the inside of a triangle, or an edge of its
 //    surface), numbered in the order of the cut triangles; coordinates are the exact points
 //    rounded to doubles, computed once per vertex from the input alone (deterministic).
@@ -17,10 +18,7 @@
 
 #if RAMUS_WITH_CGAL
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_2.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -32,6 +30,7 @@
 #include <optional>
 #include <span>
 
+#include "constrained_triangulation.hpp"
 #include "fixed_hash.hpp"
 #include "index_hash_table.hpp"
 #include "on_cores.hpp"
@@ -235,32 +234,41 @@ struct TriangleCut {
     const char* failure = nullptr;
 };
 
-// A point of a cut triangle, projected on an axis plane: bounds of its coordinates there and
-// its index in the triangle's table (PlaneTable: exact coordinates, lines through it).
-struct PlanePoint {
-    CGAL::Interval_nt<false> x = 0, y = 0;
-    std::uint32_t index = kNone;
+// Rounding upward for the interval arithmetic of one predicate, unless the caller set it for a
+// whole triangulation (cutTriangle): switching the FPU's mode twice a predicate (stmxcsr,
+// ldmxcsr) had taken most of the orientation test's time.
+class UpwardRounding {
+public:
+    explicit UpwardRounding(bool already) {
+        if (!already) protect_.emplace();
+    }
+
+private:
+    std::optional<CGAL::Protect_FPU_rounding<true>> protect_;
 };
 
-// The points of one cut triangle: exact coordinates (lazily evaluated) and the lines each is
+// The points of one cut triangle, projected on an axis plane: bounds of their coordinates there
+// (interval arithmetic on the input), exact coordinates (lazily evaluated) and the lines each is
 // known to lie on (the triangle's edges, and the intersections with other triangles), so that
-// collinear points are found without exact arithmetic.
+// collinear points are found without exact arithmetic. Answers the predicates of the
+// triangulation (ConstrainedTriangulation) on them, by index.
 struct PlaneTable {
+    using Interval = CGAL::Interval_nt<false>;
     const Refiner* refiner = nullptr;
     int dropped = 2;                                       // the axis projected away
     std::vector<PointId> ids;                              // per point
+    std::vector<std::array<Interval, 2>> at;               // per point: bounds in the plane
     std::vector<std::vector<std::uint32_t>> lines;         // per point, ascending
     mutable std::vector<std::optional<ExactPoint>> exact;  // built where first needed
     bool roundingUp = false;  // whether the FPU rounds upward already (UpwardRounding)
 
-    PlanePoint add(const PointId& id) {
+    void add(const PointId& id) {
         const auto bounds = refiner->bounds(id);
         ids.push_back(id);
+        const int u = dropped == 0 ? 1 : 0, v = dropped == 2 ? 1 : 2;
+        at.push_back({bounds[static_cast<std::size_t>(u)], bounds[static_cast<std::size_t>(v)]});
         lines.emplace_back();
         exact.emplace_back();
-        const int u = dropped == 0 ? 1 : 0, v = dropped == 2 ? 1 : 2;
-        return PlanePoint{bounds[static_cast<std::size_t>(u)], bounds[static_cast<std::size_t>(v)],
-                          static_cast<std::uint32_t>(ids.size() - 1)};
     }
     // The exact projected coordinates, as references into `exact` (no copies of the rationals).
     struct Exact2 {
@@ -286,123 +294,37 @@ struct PlaneTable {
             });
         });
     }
-};
 
-// Rounding upward for the interval arithmetic of one predicate, unless the caller set it for a
-// whole triangulation (cutTriangle): switching the FPU's mode twice a predicate (stmxcsr,
-// ldmxcsr) had taken most of the orientation test's time.
-class UpwardRounding {
-public:
-    explicit UpwardRounding(bool already) {
-        if (!already) protect_.emplace();
+    // Predicates: interval arithmetic first, exact arithmetic where that cannot decide, and
+    // points on one known line collinear at once (a cut triangle's edge points, and the points
+    // along an intersection, are exactly collinear, which no filter can show: on tree_3d the
+    // exact evaluations had made the refinement 4× slower).
+    CGAL::Orientation orientation(std::uint32_t p, std::uint32_t q, std::uint32_t r) const {
+        {
+            // Points on one line have bounds that cannot tell their orientation (or tell
+            // COLLINEAR): the lines are looked up only where the bounds leave it open.
+            const UpwardRounding protect(roundingUp);
+            const auto sign =
+                CGAL::orientationC2(at[p][0], at[p][1], at[q][0], at[q][1], at[r][0], at[r][1]);
+            if (CGAL::is_certain(sign)) return CGAL::get_certain(sign);
+        }
+        if (onOneLine({p, q, r})) return CGAL::COLLINEAR;
+        const auto a = exact2(p), b = exact2(q), c = exact2(r);
+        return CGAL::orientationC2(a[0], a[1], b[0], b[1], c[0], c[1]);
     }
-
-private:
-    std::optional<CGAL::Protect_FPU_rounding<true>> protect_;
+    // Where s lies to the circle through p, q, r (counterclockwise): ON_POSITIVE_SIDE inside.
+    CGAL::Oriented_side inCircle(std::uint32_t p, std::uint32_t q, std::uint32_t r,
+                                 std::uint32_t s) const {
+        {
+            const UpwardRounding protect(roundingUp);
+            const auto side = CGAL::side_of_oriented_circleC2(
+                at[p][0], at[p][1], at[q][0], at[q][1], at[r][0], at[r][1], at[s][0], at[s][1]);
+            if (CGAL::is_certain(side)) return CGAL::get_certain(side);
+        }
+        const auto a = exact2(p), b = exact2(q), c = exact2(r), d = exact2(s);
+        return CGAL::side_of_oriented_circleC2(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
+    }
 };
-
-// Geometric traits of CGAL's 2D triangulations over PlanePoints: interval arithmetic first,
-// exact arithmetic where that cannot decide, and points on one known line collinear at once
-// (a cut triangle's edge points, and the points along an intersection, are exactly collinear,
-// which no filter can show: on tree_3d the exact evaluations had made the refinement 4× slower).
-struct PlaneTraits {
-    using Point_2 = PlanePoint;
-    struct Segment_2 {
-        PlanePoint source, target;
-    };
-    struct Triangle_2 {
-        PlanePoint a, b, c;
-    };
-    const PlaneTable* table = nullptr;
-
-    struct Orientation_2 {
-        const PlaneTable* table;
-        CGAL::Orientation operator()(const PlanePoint& p, const PlanePoint& q,
-                                     const PlanePoint& r) const {
-            {
-                // Points on one line have bounds that cannot tell their orientation (or tell
-                // COLLINEAR): the lines are looked up only where the bounds leave it open.
-                const UpwardRounding protect(table->roundingUp);
-                const auto sign = CGAL::orientationC2(p.x, p.y, q.x, q.y, r.x, r.y);
-                if (CGAL::is_certain(sign)) return CGAL::get_certain(sign);
-            }
-            if (table->onOneLine({p.index, q.index, r.index})) return CGAL::COLLINEAR;
-            const auto a = table->exact2(p.index), b = table->exact2(q.index),
-                       c = table->exact2(r.index);
-            return CGAL::orientationC2(a[0], a[1], b[0], b[1], c[0], c[1]);
-        }
-    };
-    struct Side_of_oriented_circle_2 {
-        const PlaneTable* table;
-        CGAL::Oriented_side operator()(const PlanePoint& p, const PlanePoint& q,
-                                       const PlanePoint& r, const PlanePoint& s) const {
-            {
-                const UpwardRounding protect(table->roundingUp);
-                const auto side =
-                    CGAL::side_of_oriented_circleC2(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y);
-                if (CGAL::is_certain(side)) return CGAL::get_certain(side);
-            }
-            const auto a = table->exact2(p.index), b = table->exact2(q.index),
-                       c = table->exact2(r.index), d = table->exact2(s.index);
-            return CGAL::side_of_oriented_circleC2(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
-        }
-    };
-    template <int axis>
-    struct Compare {
-        const PlaneTable* table;
-        CGAL::Comparison_result operator()(const PlanePoint& p, const PlanePoint& q) const {
-            // CGAL compares a point with itself while it triangulates the hole a constraint
-            // leaves, which the intervals of a new point cannot decide: ABOP 1.24a's exact
-            // fallbacks (39 k) were all such, each building the point's exact coordinates.
-            if (p.index == q.index) return CGAL::EQUAL;
-            {
-                const UpwardRounding protect(table->roundingUp);
-                const auto order = axis == 0 ? CGAL::compare(p.x, q.x) : CGAL::compare(p.y, q.y);
-                if (CGAL::is_certain(order)) return CGAL::get_certain(order);
-            }
-            return CGAL::compare(table->exact2(p.index)[axis], table->exact2(q.index)[axis]);
-        }
-    };
-    using Compare_x_2 = Compare<0>;
-    using Compare_y_2 = Compare<1>;
-    template <int axis>
-    struct Less {
-        const PlaneTable* table;
-        bool operator()(const PlanePoint& p, const PlanePoint& q) const {
-            return Compare<axis>{table}(p, q) == CGAL::SMALLER;
-        }
-    };
-    using Less_x_2 = Less<0>;
-    using Less_y_2 = Less<1>;
-    struct Construct_point_2 {
-        const PlanePoint& operator()(const PlanePoint& p) const { return p; }
-    };
-    struct Construct_segment_2 {
-        Segment_2 operator()(const PlanePoint& p, const PlanePoint& q) const { return {p, q}; }
-    };
-    struct Construct_triangle_2 {
-        Triangle_2 operator()(const PlanePoint& p, const PlanePoint& q, const PlanePoint& r) const {
-            return {p, q, r};
-        }
-    };
-
-    Orientation_2 orientation_2_object() const { return {table}; }
-    Side_of_oriented_circle_2 side_of_oriented_circle_2_object() const { return {table}; }
-    Compare_x_2 compare_x_2_object() const { return {table}; }
-    Compare_y_2 compare_y_2_object() const { return {table}; }
-    Less_x_2 less_x_2_object() const { return {table}; }
-    Less_y_2 less_y_2_object() const { return {table}; }
-    Construct_point_2 construct_point_2_object() const { return {}; }
-    Construct_segment_2 construct_segment_2_object() const { return {}; }
-    Construct_triangle_2 construct_triangle_2_object() const { return {}; }
-};
-
-using PlaneTds = CGAL::Triangulation_data_structure_2<
-    CGAL::Triangulation_vertex_base_2<PlaneTraits>,
-    CGAL::Constrained_triangulation_face_base_2<
-        PlaneTraits, CGAL::Triangulation_face_base_with_info_2<std::uint32_t, PlaneTraits>>>;
-using PlaneCdt = CGAL::Constrained_Delaunay_triangulation_2<
-    PlaneTraits, PlaneTds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
 
 // Lines a point of a cut triangle can lie on: the triangle's edges, and its intersection with
 // another triangle (that triangle's index).
@@ -468,8 +390,6 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
         const double n[3] = {std::abs(normal.x()), std::abs(normal.y()), std::abs(normal.z())};
         table.dropped = n[2] >= n[0] && n[2] >= n[1] ? 2 : n[1] >= n[0] ? 1 : 0;
     }
-    const PlaneTraits traits{&table};
-    const auto orientation = traits.orientation_2_object();
 
     // The points: t's corners, then the ends of the segments, then where segments cross.
     std::vector<PointId>& ids = cut.points;
@@ -488,9 +408,7 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
                                : std::lower_bound(ids.begin() + 3, ids.end(), id);
         return static_cast<std::uint32_t>(found - ids.begin());
     };
-    std::vector<PlanePoint> at;
-    at.reserve(ids.size());
-    for (const PointId& id : ids) at.push_back(table.add(id));
+    for (const PointId& id : ids) table.add(id);
     for (std::uint32_t k = 0; k < 3; ++k) {
         table.lines[k] = {kEdgeLine + k, kEdgeLine + (k + 2) % 3};
     }
@@ -512,75 +430,68 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
         table.lines[segments.back().from].push_back(other);
         table.lines[segments.back().to].push_back(other);
     }
-    // Where two segments cross, the planes of three triangles meet: a vertex of all three.
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-        const Local& a = segments[i];
-        for (std::size_t j = i + 1; j < segments.size(); ++j) {
-            const Local& b = segments[j];
-            if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
-            const auto s1 = orientation(at[a.from], at[a.to], at[b.from]);
-            const auto s2 = orientation(at[a.from], at[a.to], at[b.to]);
-            if (s1 == s2) continue;
-            const auto s3 = orientation(at[b.from], at[b.to], at[a.from]);
-            const auto s4 = orientation(at[b.from], at[b.to], at[a.to]);
-            if (s3 == s4) continue;
-            if (s1 == CGAL::COLLINEAR || s2 == CGAL::COLLINEAR || s3 == CGAL::COLLINEAR ||
-                s4 == CGAL::COLLINEAR) {
-                throw Degenerate{"intersections that meet at an end"};
-            }
-            std::array<std::uint32_t, 3> three{t, a.other, b.other};
-            std::sort(three.begin(), three.end());
-            ids.push_back(PointId{PointId::threeTriangles, three});
-            at.push_back(table.add(ids.back()));
-            table.lines.back() = {a.other, b.other};
-        }
-    }
-    for (auto& lines : table.lines) std::sort(lines.begin(), lines.end());
-
-    PlaneCdt cdt(traits);
+    // Our predicates, and the exact points they may build (rationals, bounds from MPFR), do not
+    // depend on the rounding mode: one switch to rounding upward for all of the crossings and the
+    // triangulation (not for the filtered predicates of CGAL's kernels below, whose static
+    // filters assume rounding to nearest).
+    ConstrainedTriangulation cdt;
+    bool flip = false;
     {
-        // The triangulation runs only our predicates, and the exact points they may build
-        // (rationals, bounds from MPFR) do not depend on the rounding mode: one switch to
-        // rounding upward for all of it.
         const CGAL::Protect_FPU_rounding<true> upward;
         table.roundingUp = true;
-        for (std::uint32_t i = 0; i < at.size(); ++i) {
-            cdt.insert(at[i]);
-            if (cdt.number_of_vertices() != i + 1) throw Degenerate{"two cut points coincide"};
+        // Where two segments cross, the planes of three triangles meet: a vertex of all three.
+        for (std::size_t i = 0; i < segments.size(); ++i) {
+            const Local& a = segments[i];
+            for (std::size_t j = i + 1; j < segments.size(); ++j) {
+                const Local& b = segments[j];
+                if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
+                const auto s1 = table.orientation(a.from, a.to, b.from);
+                const auto s2 = table.orientation(a.from, a.to, b.to);
+                if (s1 == s2) continue;
+                const auto s3 = table.orientation(b.from, b.to, a.from);
+                const auto s4 = table.orientation(b.from, b.to, a.to);
+                if (s3 == s4) continue;
+                if (s1 == CGAL::COLLINEAR || s2 == CGAL::COLLINEAR || s3 == CGAL::COLLINEAR ||
+                    s4 == CGAL::COLLINEAR) {
+                    throw Degenerate{"intersections that meet at an end"};
+                }
+                std::array<std::uint32_t, 3> three{t, a.other, b.other};
+                std::sort(three.begin(), three.end());
+                ids.push_back(PointId{PointId::threeTriangles, three});
+                table.add(ids.back());
+                table.lines.back() = {a.other, b.other};
+            }
         }
-        std::vector<PlaneCdt::Vertex_handle> handles(at.size());
-        for (const auto v : cdt.finite_vertex_handles()) handles[v->point().index] = v;
-        try {
-            for (const Local& s : segments) cdt.insert_constraint(handles[s.from], handles[s.to]);
-        } catch (const std::exception&) {
-            throw Degenerate{"intersections that cross where no triangle plane does"};
-        }
+        for (auto& lines : table.lines) std::sort(lines.begin(), lines.end());
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> constraints;
+        constraints.reserve(segments.size());
+        for (const Local& s : segments) constraints.emplace_back(s.from, s.to);
+        cdt.triangulate(table, static_cast<std::uint32_t>(ids.size()), constraints);
+        // Faces are counterclockwise in the plane: pieces turn as t does.
+        flip = table.orientation(0, 1, 2) == CGAL::CLOCKWISE;
         table.roundingUp = false;
     }
-    const bool flip = orientation(at[0], at[1], at[2]) == CGAL::CLOCKWISE;
-    for (const auto f : cdt.finite_face_handles()) {
-        const std::uint32_t a = f->vertex(0)->point().index, b = f->vertex(1)->point().index,
-                            d = f->vertex(2)->point().index;
-        f->info() = static_cast<std::uint32_t>(cut.pieces.size());
-        cut.pieces.push_back(flip ? std::array{a, d, b} : std::array{a, b, d});
+    const auto& faces = cdt.faces();
+    for (const auto& f : faces) {
+        cut.pieces.push_back(flip ? std::array{f.v[0], f.v[2], f.v[1]} : f.v);
     }
     // The regions: pieces joined across the edges that are not cut, numbered in the order of their
-    // first pieces; the edges on t's sides (the infinite face across) as their pieces use them.
+    // first pieces; the edges on t's sides as their pieces use them.
     std::vector<std::uint32_t> parent(cut.pieces.size());
     std::iota(parent.begin(), parent.end(), 0u);
     auto root = [&](std::uint32_t x) {
         while (parent[x] != x) x = parent[x] = parent[parent[x]];
         return x;
     };
-    for (const auto f : cdt.finite_face_handles()) {
-        for (int i = 0; i < 3; ++i) {
-            const auto g = f->neighbor(i);
-            if (cdt.is_infinite(g)) {
-                const std::uint32_t a = f->vertex(PlaneCdt::ccw(i))->point().index;
-                const std::uint32_t b = f->vertex(PlaneCdt::cw(i))->point().index;
-                cut.sides.push_back({flip ? b : a, flip ? a : b, f->info()});  // its piece for now
-            } else if (!f->is_constrained(i) && f->info() < g->info()) {
-                parent[root(g->info())] = root(f->info());
+    constexpr auto kNoFace = ConstrainedTriangulation::kNoFace;
+    for (std::uint32_t f = 0; f < faces.size(); ++f) {
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            const std::uint32_t g = faces[f].neighbor[i];
+            if (g == kNoFace) {
+                const std::uint32_t a = faces[f].v[(i + 1) % 3], b = faces[f].v[(i + 2) % 3];
+                cut.sides.push_back({flip ? b : a, flip ? a : b, f});  // its piece for now
+            } else if (!faces[f].constrained[i] && f < g) {
+                parent[root(g)] = root(f);
             }
         }
     }
@@ -602,25 +513,29 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
     // counterclockwise in the plane); a corner of t off the edge's line is on f's side or not
     // (in the plane), and on the inner or the outer side of the other triangle (exact, on the
     // input corners), which tells f's side without the cut points' coordinates.
-    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-        if (!cdt.is_constrained(*e)) continue;
-        const auto [f, i] = *e;
-        const std::uint32_t a = f->vertex(PlaneCdt::ccw(i))->point().index;
-        const std::uint32_t b = f->vertex(PlaneCdt::cw(i))->point().index;
-        const std::uint32_t other = table.intersectionThrough(a, b);
-        if (other == kNone) throw Degenerate{"a cut edge on no single intersection"};
-        std::size_t k = 0;
-        CGAL::Orientation turn = CGAL::COLLINEAR;
-        while (k < 3 && (turn = orientation(at[a], at[b], at[k])) == CGAL::COLLINEAR) ++k;
-        const std::uint32_t* o = refiner.corners(other);
-        const CGAL::Orientation side = CGAL::orientation(refiner.point(o[0]), refiner.point(o[1]),
-                                                         refiner.point(o[2]), refiner.point(c[k]));
-        if (k == 3 || side == CGAL::COPLANAR) throw Degenerate{"a corner on an intersection"};
-        const bool inner = (side == CGAL::NEGATIVE) == (turn == CGAL::LEFT_TURN);
-        const std::uint32_t mine = cut.region[f->info()];
-        const std::uint32_t across = cut.region[f->neighbor(i)->info()];
-        steps.push_back({across, mine, inner ? 1 : -1});
-        steps.push_back({mine, across, inner ? -1 : 1});
+    for (std::uint32_t f = 0; f < faces.size(); ++f) {
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            const std::uint32_t g = faces[f].neighbor[i];
+            if (!faces[f].constrained[i] || (g != kNoFace && g < f)) continue;
+            if (g == kNoFace) throw Degenerate{"a cut along a side of the triangle"};
+            const std::uint32_t a = faces[f].v[(i + 1) % 3], b = faces[f].v[(i + 2) % 3];
+            const std::uint32_t other = table.intersectionThrough(a, b);
+            if (other == kNone) throw Degenerate{"a cut edge on no single intersection"};
+            std::size_t k = 0;
+            CGAL::Orientation turn = CGAL::COLLINEAR;
+            while (k < 3 && (turn = table.orientation(a, b, static_cast<std::uint32_t>(k))) ==
+                                CGAL::COLLINEAR)
+                ++k;
+            const std::uint32_t* o = refiner.corners(other);
+            const CGAL::Orientation side = CGAL::orientation(
+                refiner.point(o[0]), refiner.point(o[1]), refiner.point(o[2]), refiner.point(c[k]));
+            if (k == 3 || side == CGAL::COPLANAR) throw Degenerate{"a corner on an intersection"};
+            const bool inner = (side == CGAL::NEGATIVE) == (turn == CGAL::LEFT_TURN);
+            const std::uint32_t mine = cut.region[f];
+            const std::uint32_t across = cut.region[g];
+            steps.push_back({across, mine, inner ? 1 : -1});
+            steps.push_back({mine, across, inner ? -1 : 1});
+        }
     }
     windingsAcross(steps, cut.winding);
 }
@@ -724,6 +639,8 @@ const char* refineTriangles(const std::vector<RefinementPoint>& points,
             cutTriangle(refiner, cutTriangles[i], throughTriangle(cutTriangles[i]), cuts[i]);
         } catch (const Degenerate& d) {
             cuts[i].failure = d.why;
+        } catch (const TriangulationFailure& f) {
+            cuts[i].failure = f.why;
         } catch (const std::exception&) {
             // CGAL's checks (builds with assertions) on a configuration we did not foresee:
             // as for a degenerate one, the union moves the corners and tries again.
