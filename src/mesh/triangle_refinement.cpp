@@ -526,10 +526,11 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
             while (k < 3 && (turn = table.orientation(a, b, static_cast<std::uint32_t>(k))) ==
                                 CGAL::COLLINEAR)
                 ++k;
+            if (k == 3) throw Degenerate{"a cut edge along every corner"};
             const std::uint32_t* o = refiner.corners(other);
             const CGAL::Orientation side = CGAL::orientation(
                 refiner.point(o[0]), refiner.point(o[1]), refiner.point(o[2]), refiner.point(c[k]));
-            if (k == 3 || side == CGAL::COPLANAR) throw Degenerate{"a corner on an intersection"};
+            if (side == CGAL::COPLANAR) throw Degenerate{"a corner on an intersection"};
             const bool inner = (side == CGAL::NEGATIVE) == (turn == CGAL::LEFT_TURN);
             const std::uint32_t mine = cut.region[f];
             const std::uint32_t across = cut.region[g];
