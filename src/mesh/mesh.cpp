@@ -149,10 +149,12 @@ std::uint32_t appendVertexCopy(Mesh& to, const Mesh& from, std::uint32_t v) {
     copy(to.weights, from.weights);
     for (std::size_t a = 0; a < from.attributes.size(); ++a) {
         const auto width = static_cast<std::size_t>(from.attributes[a].components);
-        const auto first =
-            from.attributes[a].values.begin() + static_cast<std::ptrdiff_t>(width * v);
-        const std::vector<float> value(first, first + static_cast<std::ptrdiff_t>(width));
-        to.attributes[a].values.insert(to.attributes[a].values.end(), value.begin(), value.end());
+        const std::vector<float>& values = from.attributes[a].values;
+        std::vector<float>& into = to.attributes[a].values;
+        for (std::size_t i = 0; i < width; ++i) {
+            const float value = values[width * v + i];  // as in copy()
+            into.push_back(value);
+        }
     }
     return made;
 }

@@ -59,6 +59,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <iterator>
 #include <limits>
@@ -840,12 +841,19 @@ private:
 // Interpolates the input's vertex attributes at points of its triangles into a new mesh.
 class CornerWriter {
 public:
-    // `moved`: per surface vertex its moved position; `fan`: per input corner its surface vertex.
+    // `moved`: per surface vertex its moved position; `fan`: per input corner its surface vertex;
+    // `corners`: how many corners will be written (room for as many vertices is reserved, which
+    // touches no memory: growing the arrays had copied them and touched twice as many pages).
     CornerWriter(const Mesh& input, const std::vector<Point>& moved,
-                 const std::vector<std::uint32_t>& fan, Mesh& output)
+                 const std::vector<std::uint32_t>& fan, Mesh& output, std::size_t corners)
         : in_(input), moved_(moved), fan_(fan), out_(output) {
+        out_.positions.reserve(corners);
+        if (!in_.normals.empty()) out_.normals.reserve(corners);
+        if (!in_.tangents.empty()) out_.tangents.reserve(corners);
+        if (!in_.uvs.empty()) out_.uvs.reserve(corners);
         for (const VertexAttribute& a : input.attributes) {
             out_.attributes.push_back({a.name, a.components, {}});
+            out_.attributes.back().values.reserve(corners * static_cast<std::size_t>(a.components));
         }
     }
 
@@ -1040,7 +1048,7 @@ std::size_t pinchedEdges(const std::vector<DirectedEdge>& edges) {
 // partner are the uses left over.
 std::optional<std::vector<std::uint32_t>> fanVertices(const std::vector<std::uint32_t>& indices,
                                                       const DirectedEdges& table,
-                                                      std::uint32_t* count) {
+                                                      std::uint32_t* count, bool* turned) {
     const std::vector<DirectedEdge>& edges = table.all();
     const std::size_t corners = indices.size();
     // Per corner whose edge is a→b: the corner of the use b→a it is paired with; edges shared
@@ -1104,7 +1112,7 @@ std::optional<std::vector<std::uint32_t>> fanVertices(const std::vector<std::uin
     // it): the pairing there is turned by one (each use a→b takes the next one's twin), which
     // splits each end into a vertex per sheet (session 29: ABOP 1.24c, where the fan around
     // one end had passed through the edge twice).
-    bool turned = false;
+    *turned = false;
     for (const auto& [i, j] : shared) {
         bool twice = false;
         for (std::size_t k = i; k < j && !twice; ++k) {
@@ -1118,9 +1126,9 @@ std::optional<std::vector<std::uint32_t>> fanVertices(const std::vector<std::uin
         for (std::size_t k = i; k + 1 < j; ++k)
             twinOf[edges[k].corner] = twinOf[edges[k + 1].corner];
         twinOf[edges[j - 1].corner] = firstTwin;
-        turned = true;
+        *turned = true;
     }
-    if (turned) number();
+    if (*turned) number();
     return vertex;
 }
 
@@ -1134,6 +1142,11 @@ struct Surfaces {
     std::vector<std::uint32_t> fan;   ///< per corner: its surface vertex
     std::uint32_t vertices = 0;       ///< surface vertices
     std::size_t pinchedEdges = 0;     ///< edges where several sheets meet (when closed)
+    /// Whether parting positions needs surfacesOf again (partSurfaces): fanVertices turned the
+    /// pairing at an edge used twice, or the mesh's vertices were split since where sheets are
+    /// pinched (splitSharedMeshVertices: the pairing of a pinched edge's uses follows the vertex
+    /// ids).
+    bool recomputeOnPart = false;
 };
 
 // From the mesh's triangles and `weld`, its vertices' position ids (weldByPosition, `positions`
@@ -1145,7 +1158,8 @@ Surfaces surfacesOf(std::vector<std::uint32_t> weld, std::uint32_t positions,
     s.positions = positions;
     if (!noCollapsedTriangles(s.weld, indices)) return s;
     const DirectedEdges edges(s.weld, s.positions, indices);
-    std::optional<std::vector<std::uint32_t>> fan = fanVertices(indices, edges, &s.vertices);
+    std::optional<std::vector<std::uint32_t>> fan =
+        fanVertices(indices, edges, &s.vertices, &s.recomputeOnPart);
     s.closed = fan.has_value();
     if (s.closed) {
         s.fan = std::move(*fan);
@@ -1314,7 +1328,7 @@ Outcome unionAttempt(const Mesh& mesh, const Surfaces& input, SolidUnionReport& 
     Mesh out;
     out.name = mesh.name;
     out.materials = mesh.materials;
-    CornerWriter writer(mesh, points, fan, out);
+    CornerWriter writer(mesh, points, fan, out, 3 * soup.faces.size());
     const std::size_t primitiveCount = std::max<std::size_t>(mesh.primitives.size(), 1);
     std::vector<std::vector<std::uint32_t>> byPrimitive(primitiveCount);
     std::vector<std::vector<char>> piecesByPrimitive(primitiveCount);
@@ -1515,6 +1529,59 @@ detail::CrossingSurface crossingSurfaceOf(const Mesh& mesh, const Surfaces& surf
     return surface;
 }
 
+// Replaces the closed `surfaces` of a mesh (corners `indices`) by those after moves that gave its
+// vertices the position ids `weld` (weldByPosition, `positions` of them), where the moves only
+// parted positions (no two joined) and surfaces.recomputeOnPart is not set; else false, nothing
+// changed. As every copy of a surface vertex moves with it (crossingSurfaceOf), the two uses of
+// an edge that fanVertices paired still start and end at the same positions, and it pairs them
+// again (the uses of an edge are a part of the uses before, in the same order), so the fans and
+// their vertices stay; only edges at parted positions can stop being pinched. surfacesOf had
+// taken 17 ms of each of ABOP 1.24a's 23 ms takeMoves (its moves part touching sheets).
+bool partSurfaces(Surfaces& surfaces, std::vector<std::uint32_t>& weld, std::uint32_t positions,
+                  const std::vector<std::uint32_t>& indices) {
+    if (!surfaces.closed || surfaces.recomputeOnPart) return false;
+    std::vector<std::uint32_t> before(positions, kUnknown);   // per position: its id before
+    std::vector<std::uint32_t> parts(surfaces.positions, 0);  // per id before: positions now
+    for (std::size_t v = 0; v < weld.size(); ++v) {
+        std::uint32_t& id = before[weld[v]];
+        if (id == kUnknown) ++parts[id = surfaces.weld[v]];
+        if (id != surfaces.weld[v]) return false;  // two positions joined
+    }
+    std::size_t pinched = surfaces.pinchedEdges;
+    if (pinched > 0) {
+        // Edges a → b (a < b before) at a parted position: pinched before and now.
+        std::vector<std::uint64_t> was, is;
+        for (std::uint32_t c = 0; c < indices.size(); ++c) {
+            const std::uint32_t u = indices[c], w = indices[nextCorner(c)];
+            const std::uint32_t a = surfaces.weld[u], b = surfaces.weld[w];
+            if (a > b || (parts[a] < 2 && parts[b] < 2)) continue;
+            was.push_back(std::uint64_t{a} << 32 | b);
+            is.push_back(std::uint64_t{weld[u]} << 32 | weld[w]);
+        }
+        auto usedMoreThanOnce = [](std::vector<std::uint64_t>& keys) {
+            std::sort(keys.begin(), keys.end());
+            std::size_t count = 0;
+            for (std::size_t i = 0; i < keys.size();) {
+                std::size_t j = i;
+                while (j < keys.size() && keys[j] == keys[i]) ++j;
+                count += j - i > 1;
+                i = j;
+            }
+            return count;
+        };
+        pinched = pinched - usedMoreThanOnce(was) + usedMoreThanOnce(is);
+    }
+    surfaces.weld = std::move(weld);
+    surfaces.positions = positions;
+    surfaces.pinchedEdges = pinched;
+    RAMUS_ASSERT([&] {
+        const Surfaces again = surfacesOf(surfaces.weld, positions, indices);
+        return again.closed && again.fan == surfaces.fan && again.vertices == surfaces.vertices &&
+               again.pinchedEdges == surfaces.pinchedEdges && !again.recomputeOnPart;
+    }());
+    return true;
+}
+
 // Writes the moved points of `surface` (crossingSurfaceOf(mesh, surfaces)) into `mesh` and
 // replaces `surfaces` by the new ones; a result that is no longer closed (a move joined two
 // positions) is not taken: false, both unchanged.
@@ -1527,7 +1594,7 @@ bool takeMoves(Mesh& mesh, Surfaces& surfaces, const detail::CrossingSurface& su
     std::vector<std::uint32_t> weld = weldByPosition(mesh.positions, &positions);
     // Ids are numbered in order of first appearance: the same ids, the same positions coincide
     // as before, and so the same surfaces (most moves part nothing and join nothing).
-    if (weld == surfaces.weld) return true;
+    if (weld == surfaces.weld || partSurfaces(surfaces, weld, positions, mesh.indices)) return true;
     Surfaces moved = surfacesOf(std::move(weld), positions, mesh.indices);
     if (!moved.closed) {
         mesh.positions = std::move(before);
@@ -1584,6 +1651,7 @@ void splitSharedMeshVertices(Mesh& mesh, Surfaces& surfaces) {
         if (added) {
             at->second = appendVertexCopy(mesh, mesh, vertex);
             surfaces.weld.push_back(surfaces.weld[vertex]);
+            surfaces.recomputeOnPart = surfaces.recomputeOnPart || surfaces.pinchedEdges > 0;
         }
         mesh.indices[c] = at->second;
     }
