@@ -2,7 +2,8 @@
 // triangles of the welded tree_3d and ABOP 1.24a (the union's self-intersection search: every
 // pair of overlapping boxes) and the same with a few suspects (the crossing count after the
 // repair's moves: only pairs with a suspect). The filter accepts nothing, so this times the search
-// alone.
+// alone. BM_BoxTree: building the box tree (src/mesh/box_tree.hpp) over the same boxes, as the
+// crossing repair and the winding numbers' rays do.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "mesh/box_overlaps.hpp"
+#include "mesh/box_tree.hpp"
 #include "ramus/lsystem.hpp"
 #include "ramus/turtle.hpp"
 #include "ramus/welded_mesher.hpp"
@@ -53,6 +55,23 @@ void BM_BoxOverlaps(benchmark::State& state, const char* name) {
         static_cast<double>(boxes.size()) * static_cast<double>(state.iterations()),
         benchmark::Counter::kIsRate);
 }
+
+void BM_BoxTree(benchmark::State& state, const char* name) {
+    const std::vector<Box3> boxes = weldedTriangleBoxes(name);
+    for (auto _ : state) {
+        const ramus::detail::BoxTree tree(boxes);
+        benchmark::DoNotOptimize(&tree);
+    }
+    state.counters["boxes"] = static_cast<double>(boxes.size());
+    state.counters["boxes/s"] = benchmark::Counter(
+        static_cast<double>(boxes.size()) * static_cast<double>(state.iterations()),
+        benchmark::Counter::kIsRate);
+}
+
+BENCHMARK_CAPTURE(BM_BoxTree, tree_3d, "tree_3d")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_BoxTree, abop_1_24a, "abop_1_24a")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK_CAPTURE(BM_BoxOverlaps, tree_3d, "tree_3d")
     ->Arg(0)
