@@ -59,7 +59,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <exception>
 #include <iterator>
 #include <limits>
@@ -842,8 +841,8 @@ private:
 class CornerWriter {
 public:
     // `moved`: per surface vertex its moved position; `fan`: per input corner its surface vertex;
-    // `corners`: how many corners will be written (room for as many vertices is reserved, which
-    // touches no memory: growing the arrays had copied them and touched twice as many pages).
+    // `corners`: how many corners will be written (room for as many vertices is reserved: that
+    // touches no memory, where growing the arrays would copy them).
     CornerWriter(const Mesh& input, const std::vector<Point>& moved,
                  const std::vector<std::uint32_t>& fan, Mesh& output, std::size_t corners)
         : in_(input), moved_(moved), fan_(fan), out_(output) {
