@@ -129,6 +129,7 @@ void ConstrainedTriangulation::triangulate(
     for (const auto& [a, b] : constraints) insertConstraint(predicates, a, b);
 }
 
+// Every point comes before the constraints (triangulate): no edge is constrained yet.
 template <class Predicates>
 void ConstrainedTriangulation::insertPoint(const Predicates& predicates, std::uint32_t p) {
     // A visibility walk, which ends in a Delaunay triangulation (no constraints yet); bounded all
@@ -176,7 +177,7 @@ void ConstrainedTriangulation::insertPoint(const Predicates& predicates, std::ui
             // Face made[i] keeps the old edge i, from v[i + 1] to v[i + 2].
             faces_[made[i]] = Face{{old.v[next(i)], old.v[prev(i)], p},
                                    {made[next(i)], made[prev(i)], old.neighbor[i]},
-                                   {false, false, old.constrained[i]}};
+                                   {}};
         }
         for (std::uint32_t i = 0; i < 3; ++i) {
             pointBack(made[i], 2);
@@ -192,12 +193,8 @@ void ConstrainedTriangulation::insertPoint(const Predicates& predicates, std::ui
         if (g == kNoFace) {
             // (x, u, p) and (w, x, p).
             faces_.resize(faces_.size() + 1);
-            faces_[f] = Face{{x, u, p},
-                             {kNoFace, first, old.neighbor[prev(i)]},
-                             {false, false, old.constrained[prev(i)]}};
-            faces_[first] = Face{{w, x, p},
-                                 {f, kNoFace, old.neighbor[next(i)]},
-                                 {false, false, old.constrained[next(i)]}};
+            faces_[f] = Face{{x, u, p}, {kNoFace, first, old.neighbor[prev(i)]}, {}};
+            faces_[first] = Face{{w, x, p}, {f, kNoFace, old.neighbor[next(i)]}, {}};
             for (const std::uint32_t m : {f, first}) {
                 pointBack(m, 2);
                 toCheck_.emplace_back(m, 2);
@@ -206,22 +203,13 @@ void ConstrainedTriangulation::insertPoint(const Predicates& predicates, std::ui
             const Face oldG = faces_[g];
             const std::uint32_t j = edgeIndex(g, w, u);
             const std::uint32_t y = oldG.v[j];
-            const bool split = old.constrained[i];  // a constraint through p stays one
             // (x, u, p), (w, x, p), (y, w, p), (u, y, p).
             faces_.resize(faces_.size() + 2);
             const std::uint32_t xu = f, wx = first, yw = g, uy = first + 1;
-            faces_[xu] = Face{{x, u, p},
-                              {uy, wx, old.neighbor[prev(i)]},
-                              {split, false, old.constrained[prev(i)]}};
-            faces_[wx] = Face{{w, x, p},
-                              {xu, yw, old.neighbor[next(i)]},
-                              {false, split, old.constrained[next(i)]}};
-            faces_[yw] = Face{{y, w, p},
-                              {wx, uy, oldG.neighbor[prev(j)]},
-                              {split, false, oldG.constrained[prev(j)]}};
-            faces_[uy] = Face{{u, y, p},
-                              {yw, xu, oldG.neighbor[next(j)]},
-                              {false, split, oldG.constrained[next(j)]}};
+            faces_[xu] = Face{{x, u, p}, {uy, wx, old.neighbor[prev(i)]}, {}};
+            faces_[wx] = Face{{w, x, p}, {xu, yw, old.neighbor[next(i)]}, {}};
+            faces_[yw] = Face{{y, w, p}, {wx, uy, oldG.neighbor[prev(j)]}, {}};
+            faces_[uy] = Face{{u, y, p}, {yw, xu, oldG.neighbor[next(j)]}, {}};
             for (const std::uint32_t m : {xu, wx, yw, uy}) {
                 pointBack(m, 2);
                 toCheck_.emplace_back(m, 2);
@@ -239,19 +227,15 @@ void ConstrainedTriangulation::legalize(const Predicates& predicates) {
         toCheck_.pop_back();
         const Face face = faces_[f];
         const std::uint32_t g = face.neighbor[i];
-        if (g == kNoFace || face.constrained[i]) continue;
+        if (g == kNoFace) continue;
         const std::uint32_t p = face.v[i], u = face.v[next(i)], w = face.v[prev(i)];
         const std::uint32_t j = edgeIndex(g, w, u);
         const Face across = faces_[g];
         const std::uint32_t y = across.v[j];
         if (predicates.inCircle(p, u, w, y) <= 0) continue;
         // Flip u–w to p–y: (p, u, y) and (p, y, w).
-        faces_[f] = Face{{p, u, y},
-                         {across.neighbor[next(j)], g, face.neighbor[prev(i)]},
-                         {across.constrained[next(j)], false, face.constrained[prev(i)]}};
-        faces_[g] = Face{{p, y, w},
-                         {across.neighbor[prev(j)], face.neighbor[next(i)], f},
-                         {across.constrained[prev(j)], face.constrained[next(i)], false}};
+        faces_[f] = Face{{p, u, y}, {across.neighbor[next(j)], g, face.neighbor[prev(i)]}, {}};
+        faces_[g] = Face{{p, y, w}, {across.neighbor[prev(j)], face.neighbor[next(i)], f}, {}};
         pointBack(f, 0);
         pointBack(g, 1);
         toCheck_.emplace_back(f, 0);
