@@ -11,10 +11,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "box_tree.hpp"
 #include "position_bits.hpp"
+#include "ramus/error.hpp"
 #include "triangle_pairs.hpp"
 
 namespace ramus::detail {
@@ -33,6 +35,10 @@ double ulpAt(const Vec3f& p) {
     return static_cast<double>(std::nextafter(largest, std::numeric_limits<float>::infinity()) -
                                largest);
 }
+
+// Every vertex stays within maxMove of where it was, so a triangle meeting one of v's triangles
+// now was, as stored, within maxMove of its box: kReach of maxMove around that box.
+constexpr double kReach = 1.01;
 
 class Separator {
 public:
@@ -59,15 +65,32 @@ private:
     Vec3 vertexNormal(std::uint32_t v);
     void addDirection(const Vec3& d);
     void addTowardsMiddle(std::uint32_t v);
-    static std::vector<Box3> boxesOf(const CrossingSurface& surface);
+    Vec3f originalOf(std::uint32_t v) const;
+    Box3 originalBox(std::uint32_t t) const;
+    template <class Vertices>
+    void cover(const Vertices& vertices);
+    // v's triangles: around_[star(v).first], … up to star(v).second (ascending; v covered).
+    std::pair<std::uint32_t, std::uint32_t> star(std::uint32_t v) const;
 
     CrossingSurface& s_;
     double maxMove_;
-    std::vector<Vec3f> original_;       // per vertex: where it was (moves stay within maxMove)
-    std::vector<std::uint32_t> first_;  // per vertex + 1: its triangles in around_
+    // Where the vertices that moved were (moves stay within maxMove); the others are there still.
+    std::vector<std::uint8_t> moved_;  // per vertex
+    std::unordered_map<std::uint32_t, Vec3f> original_;
+    // The searches look only at the triangles near the vertices that may move (session 40: a tree
+    // over all of the surface's boxes, of tens of megabytes for the 230 k triangles of tree_3d,
+    // had cost more than the repair of its 3 crossing pairs). A vertex is covered once its
+    // triangles are in local_ and so is every triangle whose box, as it was, comes within reach
+    // of theirs wherever they move (region_); the searches are only made for covered vertices,
+    // so they find what a tree over every triangle would (in another order, which no decision
+    // depends on).
+    std::vector<std::uint8_t> covered_;  // per vertex
+    std::vector<Box3> region_;           // boxes around the covered vertices' triangles
+    std::vector<std::uint32_t> local_;   // the triangles meeting region_, ascending
+    std::optional<BoxTree> tree_;        // over their boxes as they were (local_ order)
+    std::vector<std::uint32_t> starOf_;  // the vertices of local_'s triangles, ascending
+    std::vector<std::uint32_t> first_;   // per entry of starOf_ + 1: its triangles in around_
     std::vector<std::uint32_t> around_;
-    std::vector<Box3> boxes_;  // the triangles' boxes as they were
-    BoxTree tree_;             // over boxes_ (CGAL's AABB tree until session 31)
     // Scratch of tryMoves: per triangle k of the vertex it moves (its k-th in around_), the
     // triangles near[nearFirst[k]], … that come within reach wherever the vertex goes.
     std::vector<std::uint32_t> nearFirst_, near_;
@@ -81,31 +104,148 @@ private:
 Separator::Separator(CrossingSurface& surface, double maxMove)
     : s_(surface),
       maxMove_(maxMove),
-      original_(surface.points),
-      boxes_(boxesOf(surface)),
-      tree_(boxes_) {
-    const std::size_t vertices = s_.points.size();
-    first_.assign(vertices + 1, 0);
-    for (const auto& t : s_.triangles) {
-        for (std::uint32_t v : t) ++first_[v + 1];
-    }
-    for (std::size_t v = 0; v < vertices; ++v) first_[v + 1] += first_[v];
-    around_.resize(first_.back());
-    std::vector<std::uint32_t> fill(first_.begin(), first_.end() - 1);
-    for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) {
-        for (std::uint32_t v : s_.triangles[t]) around_[fill[v]++] = t;
-    }
+      moved_(surface.points.size(), 0),
+      covered_(surface.points.size(), 0) {}
+
+Vec3f Separator::originalOf(std::uint32_t v) const {
+    return moved_[v] ? original_.at(v) : s_.points[v];
 }
 
-std::vector<Box3> Separator::boxesOf(const CrossingSurface& surface) {
-    std::vector<Box3> boxes(surface.triangles.size());
-    for (std::size_t t = 0; t < boxes.size(); ++t) {
-        for (const std::uint32_t v : surface.triangles[t]) {
-            const Vec3f& p = surface.points[v];
-            boxes[t].add({p.x(), p.y(), p.z()});
+Box3 Separator::originalBox(std::uint32_t t) const {
+    Box3 box;
+    for (const std::uint32_t v : s_.triangles[t]) {
+        const Vec3f p = originalOf(v);
+        box.add({p.x(), p.y(), p.z()});
+    }
+    return box;
+}
+
+// `box` grown by `grow` on every side.
+Box3 grown(Box3 box, double grow) {
+    for (int d = 0; d < 3; ++d) {
+        box.lo[d] -= grow;
+        box.hi[d] += grow;
+    }
+    return box;
+}
+
+std::pair<std::uint32_t, std::uint32_t> Separator::star(std::uint32_t v) const {
+    RAMUS_ASSERT(covered_[v]);
+    const auto at = static_cast<std::uint32_t>(std::lower_bound(starOf_.begin(), starOf_.end(), v) -
+                                               starOf_.begin());
+    return {first_[at], first_[at + 1]};
+}
+
+// The key of grid cell (x, y, z) of a RegionCells: 21 bits of each coordinate. Cells far apart
+// may share a key, which only makes a box meet more of the region than it does.
+std::uint64_t cellKey(std::int64_t x, std::int64_t y, std::int64_t z) {
+    constexpr std::int64_t kMask = (std::int64_t{1} << 21) - 1;
+    return static_cast<std::uint64_t>(x & kMask) << 42 |
+           static_cast<std::uint64_t>(y & kMask) << 21 | static_cast<std::uint64_t>(z & kMask);
+}
+
+// The cells of a uniform grid, as wide as the largest side of some boxes (a region), that those
+// boxes meet: to tell which of many other boxes meet the region, without a tree over either.
+// A box that could meet it counts as meeting it (a superset: a box of more than 64 cells, a key
+// that several cells share).
+class RegionCells {
+public:
+    explicit RegionCells(const std::vector<Box3>& boxes) {
+        for (const Box3& b : boxes) {
+            for (int d = 0; d < 3; ++d) {
+                bounds_.lo[d] = std::min(bounds_.lo[d], b.lo[d]);
+                bounds_.hi[d] = std::max(bounds_.hi[d], b.hi[d]);
+                side_ = std::max(side_, b.hi[d] - b.lo[d]);
+            }
+        }
+        if (!(side_ > 0.0)) side_ = 1.0;
+        for (const Box3& b : boxes) forCells(b, [&](std::uint64_t key) { keys_.push_back(key); });
+        std::sort(keys_.begin(), keys_.end());
+        keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+    }
+
+    bool mayMeet(const Box3& b) const {
+        if (!b.overlaps(bounds_)) return false;
+        bool meets = false;
+        const bool few = forCells(b, [&](std::uint64_t key) {
+            meets = meets || std::binary_search(keys_.begin(), keys_.end(), key);
+        });
+        return meets || !few;
+    }
+
+private:
+    // Calls visit(key) for the cells b meets; false (and no calls) where those are more than 64.
+    template <class Visit>
+    bool forCells(const Box3& b, Visit visit) const {
+        std::array<std::int64_t, 3> lo, hi;
+        std::int64_t cells = 1;
+        for (int d = 0; d < 3; ++d) {
+            lo[d] = static_cast<std::int64_t>(std::floor((b.lo[d] - bounds_.lo[d]) / side_));
+            hi[d] = static_cast<std::int64_t>(std::floor((b.hi[d] - bounds_.lo[d]) / side_));
+            cells *= std::max<std::int64_t>(0, hi[d] - lo[d] + 1);
+            if (cells > 64) return false;
+        }
+        for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
+            for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+                for (std::int64_t z = lo[2]; z <= hi[2]; ++z) visit(cellKey(x, y, z));
+            }
+        }
+        return true;
+    }
+
+    Box3 bounds_;
+    double side_ = 0.0;
+    std::vector<std::uint64_t> keys_;  // ascending
+};
+
+// The triangles of the vertices `vertices` that are not covered yet, and those whose boxes, as
+// they were, come within reach of theirs, go into the searches (local_, tree_, the stars).
+// Every vertex stays within maxMove of where it was, and tryMoves moves a vertex at most 2
+// maxMove from where it is: collectNear's reach of a covered vertex's triangle lies within its
+// box as it was grown by (kReach + 3.01) maxMove.
+template <class Vertices>
+void Separator::cover(const Vertices& vertices) {
+    bool adding = false;
+    for (const std::uint32_t v : vertices) {
+        if (covered_[v] == 0) covered_[v] = 2;  // being added
+        adding = adding || covered_[v] == 2;
+    }
+    if (!adding) return;
+    const double margin = (kReach + 3.5) * maxMove_;
+    for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) {
+        const auto& c = s_.triangles[t];
+        if (covered_[c[0]] == 2 || covered_[c[1]] == 2 || covered_[c[2]] == 2) {
+            region_.push_back(grown(originalBox(t), margin));
         }
     }
-    return boxes;
+    for (std::uint8_t& flag : covered_) flag = flag != 0 ? 1 : 0;
+    const RegionCells cells(region_);
+    local_.clear();
+    std::vector<Box3> boxes;
+    for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) {
+        const Box3 box = originalBox(t);
+        if (!cells.mayMeet(box)) continue;
+        local_.push_back(t);
+        boxes.push_back(box);
+    }
+    tree_.emplace(boxes);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;  // (vertex, triangle)
+    corners.reserve(3 * local_.size());
+    for (const std::uint32_t t : local_) {
+        for (const std::uint32_t v : s_.triangles[t]) corners.emplace_back(v, t);
+    }
+    std::sort(corners.begin(), corners.end());
+    starOf_.clear();
+    first_.clear();
+    around_.clear();
+    for (const auto& [v, t] : corners) {
+        if (starOf_.empty() || starOf_.back() != v) {
+            starOf_.push_back(v);
+            first_.push_back(static_cast<std::uint32_t>(around_.size()));
+        }
+        around_.push_back(t);
+    }
+    first_.push_back(static_cast<std::uint32_t>(around_.size()));
 }
 
 Triangle Separator::triangle(std::uint32_t t) const {
@@ -159,10 +299,6 @@ Box3 Separator::boxNow(std::uint32_t t) const {
     return box;
 }
 
-// Every vertex stays within maxMove of where it was, so a triangle meeting one of v's triangles
-// now was, as stored, within maxMove of its box: kReach of maxMove around that box.
-constexpr double kReach = 1.01;
-
 // Crossing pairs with one of v's triangles where it is now (appended to `pairs` when given).
 std::size_t Separator::crossingsAround(std::uint32_t v, std::vector<TrianglePair>* pairs) {
     collectNear(v);
@@ -176,11 +312,12 @@ std::size_t Separator::crossingsAround(std::uint32_t v, std::vector<TrianglePair
 void Separator::collectNear(std::uint32_t v) {
     nearFirst_.clear();
     near_.clear();
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+    const auto [first, end] = star(v);
+    for (std::uint32_t i = first; i < end; ++i) {
         const std::uint32_t f = around_[i];
         nearFirst_.push_back(static_cast<std::uint32_t>(near_.size()));
-        tree_.forEachOverlapping(reachOf(f, (kReach + 2.01) * maxMove_), [&](std::uint32_t g) {
-            if (g != f) near_.push_back(g);
+        tree_->forEachOverlapping(reachOf(f, (kReach + 2.01) * maxMove_), [&](std::uint32_t k) {
+            if (local_[k] != f) near_.push_back(local_[k]);
         });
     }
     nearFirst_.push_back(static_cast<std::uint32_t>(near_.size()));
@@ -194,10 +331,11 @@ void Separator::collectNear(std::uint32_t v) {
 // 1.6 M pairs tested for 8 k moves tried, the same moves).
 std::size_t Separator::crossingsNear(std::uint32_t v, std::vector<TrianglePair>* pairs) const {
     std::size_t count = 0;
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+    const auto [first, end] = star(v);
+    for (std::uint32_t i = first; i < end; ++i) {
         const std::uint32_t f = around_[i];
         const Box3 box = boxNow(f);
-        const std::uint32_t k = i - first_[v];
+        const std::uint32_t k = i - first;
         for (std::uint32_t n = nearFirst_[k]; n < nearFirst_[k + 1]; ++n) {
             const std::uint32_t g = near_[n];
             if (!boxNow(g).overlaps(box) || !cross(f, g)) continue;
@@ -214,17 +352,18 @@ std::size_t Separator::crossingsNear(std::uint32_t v, std::vector<TrianglePair>*
 // had tested 1.6 M pairs in all, most of them apart).
 bool Separator::atMostCrossingsNear(std::uint32_t v, std::size_t most) {
     std::size_t count = 0;
+    const auto [first, end] = star(v);
     auto crosses = [&](std::uint32_t k, std::uint32_t n, const Box3& box) {
         const std::uint32_t g = near_[n];
-        return boxNow(g).overlaps(box) && cross(around_[first_[v] + k], g);
+        return boxNow(g).overlaps(box) && cross(around_[first + k], g);
     };
     const auto [lastK, lastN] = lastCrossing_;
-    if (lastK != kNoPair && crosses(lastK, lastN, boxNow(around_[first_[v] + lastK])) &&
+    if (lastK != kNoPair && crosses(lastK, lastN, boxNow(around_[first + lastK])) &&
         ++count > most) {
         return false;
     }
-    for (std::uint32_t k = 0; k + first_[v] < first_[v + 1]; ++k) {
-        const Box3 box = boxNow(around_[first_[v] + k]);
+    for (std::uint32_t k = 0; k + first < end; ++k) {
+        const Box3 box = boxNow(around_[first + k]);
         for (std::uint32_t n = nearFirst_[k]; n < nearFirst_[k + 1]; ++n) {
             if ((k == lastK && n == lastN) || !crosses(k, n, box)) continue;
             lastCrossing_ = {k, n};
@@ -236,9 +375,10 @@ bool Separator::atMostCrossingsNear(std::uint32_t v, std::size_t most) {
 
 // Every triangle of v keeps its orientation and some area (normals before the move given).
 bool Separator::turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before) const {
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+    const auto [first, end] = star(v);
+    for (std::uint32_t i = first; i < end; ++i) {
         const std::uint32_t t = around_[i];
-        if (!(normal(t).dot(before[i - first_[v]]) > 0.0) || degenerate(t)) return false;
+        if (!(normal(t).dot(before[i - first]) > 0.0) || degenerate(t)) return false;
     }
     return true;
 }
@@ -248,14 +388,19 @@ bool Separator::turnsNoTriangle(std::uint32_t v, const std::vector<Vec3>& before
 // crossings around v. normals_ holds the normals of v's triangles before the move.
 bool Separator::tryMoves(std::uint32_t v, std::size_t most) {
     const Vec3f start = s_.points[v];
+    const Vec3f origin = originalOf(v);
     const Vec3 p = start.cast<double>();
     collectNear(v);
     for (double step = ulpAt(start); step <= maxMove_; step *= 2.0) {
         for (const Vec3& d : directions_) {
             const Vec3f q = (p + step * d).cast<float>();
-            if (q == start || (q - original_[v]).cast<double>().norm() > maxMove_) continue;
+            if (q == start || (q - origin).cast<double>().norm() > maxMove_) continue;
             s_.points[v] = q;
-            if (turnsNoTriangle(v, normals_) && atMostCrossingsNear(v, most)) return true;
+            if (turnsNoTriangle(v, normals_) && atMostCrossingsNear(v, most)) {
+                if (!moved_[v]) original_.emplace(v, origin);
+                moved_[v] = 1;
+                return true;
+            }
             s_.points[v] = start;
         }
     }
@@ -266,7 +411,8 @@ bool Separator::tryMoves(std::uint32_t v, std::size_t most) {
 Vec3 Separator::vertexNormal(std::uint32_t v) {
     normals_.clear();
     Vec3 sum = Vec3::Zero();
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+    const auto [first, end] = star(v);
+    for (std::uint32_t i = first; i < end; ++i) {
         normals_.push_back(normal(around_[i]));
         sum += normals_.back();
     }
@@ -300,10 +446,11 @@ bool Separator::separate(std::uint32_t v, std::uint32_t partner) {
 // sliver), and its opposite.
 void Separator::addTowardsMiddle(std::uint32_t v) {
     Vec3 middle = Vec3::Zero();
-    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
+    const auto [first, end] = star(v);
+    for (std::uint32_t i = first; i < end; ++i) {
         for (std::uint32_t w : s_.triangles[around_[i]]) middle += s_.points[w].cast<double>();
     }
-    addDirection(middle / (3.0 * (first_[v + 1] - first_[v])) - s_.points[v].cast<double>());
+    addDirection(middle / (3.0 * (end - first)) - s_.points[v].cast<double>());
 }
 
 // A move of v, a corner of a sheet that rounding pinched to another along an edge, off that
@@ -329,10 +476,11 @@ CrossingRepair Separator::unpinchAll(std::span<const std::uint32_t> vertices) {
     for (const Vec3f& p : s_.points) {
         if (auto it = sharing.find(bitsOf(p)); it != sharing.end()) ++it->second;
     }
+    cover(vertices);
     CrossingRepair repair;
     for (std::uint32_t v : vertices) {
-        std::uint32_t& shared = sharing.at(bitsOf(original_[v]));
-        if (shared < 2 || s_.points[v] != original_[v] || !movable(v) || !unpinch(v)) continue;
+        std::uint32_t& shared = sharing.at(bitsOf(originalOf(v)));
+        if (shared < 2 || s_.points[v] != originalOf(v) || !movable(v) || !unpinch(v)) continue;
         --shared;
         ++repair.movedVertices;
     }
@@ -346,8 +494,16 @@ CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
     CrossingRepair repair;
     std::vector<TrianglePair> pending(crossing.begin(), crossing.end());
     std::vector<TrianglePair> made;
+    std::vector<std::uint32_t> corners;  // of the pending pairs: the vertices that may move
     for (int round = 0; round < 8; ++round) {
         made.clear();
+        corners.clear();
+        for (const auto& [f, g] : pending) {
+            for (const std::uint32_t t : {f, g}) {
+                corners.insert(corners.end(), s_.triangles[t].begin(), s_.triangles[t].end());
+            }
+        }
+        cover(corners);
         for (const auto& [f, g] : pending) {
             for (int side = 0; side < 2 && cross(f, g); ++side) {
                 const std::uint32_t mine = side == 0 ? f : g;
