@@ -88,6 +88,19 @@ Passage passage(const RefinementPoint& p, const RefinementPoint& q, const Refine
     return Passage::through;
 }
 
+// Rounding upward for the interval arithmetic of one predicate, unless the caller set it for a
+// whole triangulation (cutTriangle): switching the FPU's mode twice a predicate (stmxcsr,
+// ldmxcsr) had taken most of the orientation test's time.
+class UpwardRounding {
+public:
+    explicit UpwardRounding(bool already) {
+        if (!already) protect_.emplace();
+    }
+
+private:
+    std::optional<CGAL::Protect_FPU_rounding<true>> protect_;
+};
+
 class Refiner {
     using Interval = CGAL::Interval_nt<false>;
 
@@ -168,9 +181,10 @@ public:
     }
 
     // Bounds of the point's coordinates, in interval arithmetic on the input (no exact
-    // numbers are built; where a bound would not be finite, the lazy exact point's).
-    std::array<Interval, 3> bounds(const PointId& id) const {
-        CGAL::Protect_FPU_rounding<true> protect;
+    // numbers are built; where a bound would not be finite, the lazy exact point's), rounding
+    // upward (`roundingUp`: the caller has set that already, UpwardRounding).
+    std::array<Interval, 3> bounds(const PointId& id, bool roundingUp = false) const {
+        const UpwardRounding protect(roundingUp);
         std::array<Interval, 3> out;
         if (id.kind == PointId::corner) {
             out = corner(id.of[0]);
@@ -234,19 +248,6 @@ struct TriangleCut {
     const char* failure = nullptr;
 };
 
-// Rounding upward for the interval arithmetic of one predicate, unless the caller set it for a
-// whole triangulation (cutTriangle): switching the FPU's mode twice a predicate (stmxcsr,
-// ldmxcsr) had taken most of the orientation test's time.
-class UpwardRounding {
-public:
-    explicit UpwardRounding(bool already) {
-        if (!already) protect_.emplace();
-    }
-
-private:
-    std::optional<CGAL::Protect_FPU_rounding<true>> protect_;
-};
-
 // The points of one cut triangle, projected on an axis plane: bounds of their coordinates there
 // (interval arithmetic on the input), exact coordinates (lazily evaluated) and the lines each is
 // known to lie on (the triangle's edges, and the intersections with other triangles), so that
@@ -263,7 +264,7 @@ struct PlaneTable {
     bool roundingUp = false;  // whether the FPU rounds upward already (UpwardRounding)
 
     void add(const PointId& id) {
-        const auto bounds = refiner->bounds(id);
+        const auto bounds = refiner->bounds(id, roundingUp);
         ids.push_back(id);
         const int u = dropped == 0 ? 1 : 0, v = dropped == 2 ? 1 : 2;
         at.push_back({bounds[static_cast<std::size_t>(u)], bounds[static_cast<std::size_t>(v)]});
@@ -408,7 +409,13 @@ void cutTriangle(const Refiner& refiner, std::uint32_t t,
                                : std::lower_bound(ids.begin() + 3, ids.end(), id);
         return static_cast<std::uint32_t>(found - ids.begin());
     };
-    for (const PointId& id : ids) table.add(id);
+    {
+        // One switch to rounding upward for the bounds of all of them (Refiner::bounds).
+        const CGAL::Protect_FPU_rounding<true> upward;
+        table.roundingUp = true;
+        for (const PointId& id : ids) table.add(id);
+        table.roundingUp = false;
+    }
     for (std::uint32_t k = 0; k < 3; ++k) {
         table.lines[k] = {kEdgeLine + k, kEdgeLine + (k + 2) % 3};
     }
