@@ -97,6 +97,9 @@ private:
     // The pair that ended atMostCrossingsNear's last count: (k, index into near_); kNoPair: none.
     static constexpr std::uint32_t kNoPair = std::numeric_limits<std::uint32_t>::max();
     std::pair<std::uint32_t, std::uint32_t> lastCrossing_{kNoPair, kNoPair};
+#if defined(RAMUS_ENABLE_ASSERTS)
+    std::size_t nearChecks_ = 0;  // collectNear's searches, of which every 16th is checked
+#endif
     std::vector<Vec3> normals_;     // scratch: normals of a vertex's triangles before a move
     std::vector<Vec3> directions_;  // scratch: the directions of a vertex's moves
 };
@@ -316,9 +319,21 @@ void Separator::collectNear(std::uint32_t v) {
     for (std::uint32_t i = first; i < end; ++i) {
         const std::uint32_t f = around_[i];
         nearFirst_.push_back(static_cast<std::uint32_t>(near_.size()));
-        tree_->forEachOverlapping(reachOf(f, (kReach + 2.01) * maxMove_), [&](std::uint32_t k) {
+        const Box3 reach = reachOf(f, (kReach + 2.01) * maxMove_);
+        tree_->forEachOverlapping(reach, [&](std::uint32_t k) {
             if (local_[k] != f) near_.push_back(local_[k]);
         });
+#if defined(RAMUS_ENABLE_ASSERTS)
+        // What a search of every triangle would find: each whose box, as it was, meets the reach
+        // (on one search in 16: a pass over the surface each time doubled the unions' tests).
+        if (nearChecks_++ % 16 != 0) continue;
+        std::vector<std::uint32_t> found(near_.begin() + nearFirst_.back(), near_.end());
+        std::sort(found.begin(), found.end());
+        for (std::uint32_t g = 0; g < s_.triangles.size(); ++g) {
+            RAMUS_ASSERT(g == f || !originalBox(g).overlaps(reach) ||
+                         std::binary_search(found.begin(), found.end(), g));
+        }
+#endif
     }
     nearFirst_.push_back(static_cast<std::uint32_t>(near_.size()));
     lastCrossing_ = {kNoPair, kNoPair};
