@@ -88,8 +88,7 @@ private:
     std::vector<Box3> region_;           // boxes around the covered vertices' triangles
     std::vector<std::uint32_t> local_;   // the triangles meeting region_, ascending
     std::optional<BoxTree> tree_;        // over their boxes as they were (local_ order)
-    std::vector<std::uint32_t> starOf_;  // the vertices of local_'s triangles, ascending
-    std::vector<std::uint32_t> first_;   // per entry of starOf_ + 1: its triangles in around_
+    std::vector<std::uint32_t> first_;   // per vertex + 1: its triangles of local_ in around_
     std::vector<std::uint32_t> around_;
     // Scratch of tryMoves: per triangle k of the vertex it moves (its k-th in around_), the
     // triangles near[nearFirst[k]], … that come within reach wherever the vertex goes.
@@ -134,63 +133,70 @@ Box3 grown(Box3 box, double grow) {
 
 std::pair<std::uint32_t, std::uint32_t> Separator::star(std::uint32_t v) const {
     RAMUS_ASSERT(covered_[v]);
-    const auto at = static_cast<std::uint32_t>(std::lower_bound(starOf_.begin(), starOf_.end(), v) -
-                                               starOf_.begin());
-    return {first_[at], first_[at + 1]};
+    return {first_[v], first_[v + 1]};
 }
 
-// The key of grid cell (x, y, z) of a RegionCells: 21 bits of each coordinate. Cells far apart
-// may share a key, which only makes a box meet more of the region than it does.
-std::uint64_t cellKey(std::int64_t x, std::int64_t y, std::int64_t z) {
-    constexpr std::int64_t kMask = (std::int64_t{1} << 21) - 1;
-    return static_cast<std::uint64_t>(x & kMask) << 42 |
-           static_cast<std::uint64_t>(y & kMask) << 21 | static_cast<std::uint64_t>(z & kMask);
-}
-
-// The cells of a uniform grid, as wide as the largest side of some boxes (a region), that those
-// boxes meet: to tell which of many other boxes meet the region, without a tree over either.
-// A box that could meet it counts as meeting it (a superset: a box of more than 64 cells, a key
-// that several cells share).
+// The cells of a uniform grid over some boxes (a region) that those boxes meet, as bits: to tell
+// which of many other boxes meet the region, without a tree over either. At most kRegionCells
+// cells on an axis, each at least as wide as the largest side of the region's boxes. A box that
+// could meet the region counts as meeting it (a superset: one that meets more than 64 cells).
 class RegionCells {
 public:
+    static constexpr std::int64_t kRegionCells = 128;
+
     explicit RegionCells(const std::vector<Box3>& boxes) {
+        double largest = 0.0;
         for (const Box3& b : boxes) {
             for (int d = 0; d < 3; ++d) {
                 bounds_.lo[d] = std::min(bounds_.lo[d], b.lo[d]);
                 bounds_.hi[d] = std::max(bounds_.hi[d], b.hi[d]);
-                side_ = std::max(side_, b.hi[d] - b.lo[d]);
+                largest = std::max(largest, b.hi[d] - b.lo[d]);
             }
         }
+        for (int d = 0; d < 3; ++d) {
+            side_ = std::max(side_, (bounds_.hi[d] - bounds_.lo[d]) / kRegionCells);
+        }
+        side_ = std::max(side_, largest);
         if (!(side_ > 0.0)) side_ = 1.0;
-        for (const Box3& b : boxes) forCells(b, [&](std::uint64_t key) { keys_.push_back(key); });
-        std::sort(keys_.begin(), keys_.end());
-        keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+        bits_.assign((kRegionCells * kRegionCells * kRegionCells + 63) / 64, 0);
+        for (const Box3& b : boxes) {
+            forCells(
+                b, [&](std::int64_t cell) { bits_[cell / 64] |= std::uint64_t{1} << (cell % 64); });
+        }
     }
 
     bool mayMeet(const Box3& b) const {
         if (!b.overlaps(bounds_)) return false;
         bool meets = false;
-        const bool few = forCells(b, [&](std::uint64_t key) {
-            meets = meets || std::binary_search(keys_.begin(), keys_.end(), key);
+        const bool few = forCells(b, [&](std::int64_t cell) {
+            meets = meets || (bits_[cell / 64] >> (cell % 64) & 1) != 0;
         });
         return meets || !few;
     }
 
 private:
-    // Calls visit(key) for the cells b meets; false (and no calls) where those are more than 64.
+    // Calls visit(cell) for the cells b meets (b overlapping the region's bounds); false (and no
+    // calls) where those are more than 64.
     template <class Visit>
     bool forCells(const Box3& b, Visit visit) const {
         std::array<std::int64_t, 3> lo, hi;
         std::int64_t cells = 1;
         for (int d = 0; d < 3; ++d) {
-            lo[d] = static_cast<std::int64_t>(std::floor((b.lo[d] - bounds_.lo[d]) / side_));
-            hi[d] = static_cast<std::int64_t>(std::floor((b.hi[d] - bounds_.lo[d]) / side_));
-            cells *= std::max<std::int64_t>(0, hi[d] - lo[d] + 1);
+            auto cellOf = [&](double x) {
+                return std::clamp(
+                    static_cast<std::int64_t>(std::floor((x - bounds_.lo[d]) / side_)),
+                    std::int64_t{0}, kRegionCells - 1);
+            };
+            lo[d] = cellOf(b.lo[d]);
+            hi[d] = cellOf(b.hi[d]);
+            cells *= hi[d] - lo[d] + 1;
             if (cells > 64) return false;
         }
         for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
             for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
-                for (std::int64_t z = lo[2]; z <= hi[2]; ++z) visit(cellKey(x, y, z));
+                for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+                    visit((x * kRegionCells + y) * kRegionCells + z);
+                }
             }
         }
         return true;
@@ -198,8 +204,12 @@ private:
 
     Box3 bounds_;
     double side_ = 0.0;
-    std::vector<std::uint64_t> keys_;  // ascending
+    std::vector<std::uint64_t> bits_;  // per cell, x major
 };
+
+// Where the region around the covered vertices has more than one box in this many triangles of
+// the surface, cover takes every triangle instead of telling them apart.
+constexpr std::size_t kWholeSurface = 8;
 
 // The triangles of the vertices `vertices` that are not covered yet, and those whose boxes, as
 // they were, come within reach of theirs, go into the searches (local_, tree_, the stars).
@@ -222,33 +232,29 @@ void Separator::cover(const Vertices& vertices) {
         }
     }
     for (std::uint8_t& flag : covered_) flag = flag != 0 ? 1 : 0;
-    const RegionCells cells(region_);
+    const bool everything = kWholeSurface * region_.size() > s_.triangles.size();
+    const std::optional<RegionCells> cells =
+        everything ? std::nullopt : std::optional<RegionCells>(region_);
     local_.clear();
     std::vector<Box3> boxes;
     for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) {
         const Box3 box = originalBox(t);
-        if (!cells.mayMeet(box)) continue;
+        if (cells && !cells->mayMeet(box)) continue;
         local_.push_back(t);
         boxes.push_back(box);
     }
     tree_.emplace(boxes);
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;  // (vertex, triangle)
-    corners.reserve(3 * local_.size());
+    // The stars: local_'s triangles by vertex, ascending (a counting sort).
+    first_.assign(s_.points.size() + 1, 0);
     for (const std::uint32_t t : local_) {
-        for (const std::uint32_t v : s_.triangles[t]) corners.emplace_back(v, t);
+        for (const std::uint32_t v : s_.triangles[t]) ++first_[v + 1];
     }
-    std::sort(corners.begin(), corners.end());
-    starOf_.clear();
-    first_.clear();
-    around_.clear();
-    for (const auto& [v, t] : corners) {
-        if (starOf_.empty() || starOf_.back() != v) {
-            starOf_.push_back(v);
-            first_.push_back(static_cast<std::uint32_t>(around_.size()));
-        }
-        around_.push_back(t);
+    for (std::size_t v = 0; v + 1 < first_.size(); ++v) first_[v + 1] += first_[v];
+    around_.resize(first_.back());
+    std::vector<std::uint32_t> fill(first_.begin(), first_.end() - 1);
+    for (const std::uint32_t t : local_) {
+        for (const std::uint32_t v : s_.triangles[t]) around_[fill[v]++] = t;
     }
-    first_.push_back(static_cast<std::uint32_t>(around_.size()));
 }
 
 Triangle Separator::triangle(std::uint32_t t) const {
