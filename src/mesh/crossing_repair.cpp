@@ -139,7 +139,8 @@ std::pair<std::uint32_t, std::uint32_t> Separator::star(std::uint32_t v) const {
 // The cells of a uniform grid over some boxes (a region) that those boxes meet, as bits: to tell
 // which of many other boxes meet the region, without a tree over either. At most kRegionCells
 // cells on an axis, each at least as wide as the largest side of the region's boxes. A box that
-// could meet the region counts as meeting it (a superset: one that meets more than 64 cells).
+// could meet the region counts as meeting it (a superset: one that meets more than 64 cells); a
+// box of the region itself meets at most 2 cells an axis, all of them marked.
 class RegionCells {
 public:
     static constexpr std::int64_t kRegionCells = 128;
