@@ -23,9 +23,10 @@ struct WeldedMeshParams {
     double junctionMargin = 0.05;
     /// Replace the surfaces by the boundary of the solid they enclose (unionClosedSurfaces):
     /// pieces left by fallbacks and crossings become one surface wherever they overlap, and
-    /// branches that cross in the skeleton stop piercing each other. Slower (CGAL's exact
-    /// autorefinement, about 50 k triangles/s; docs/welded.md, "Solid union"); junction
-    /// triangles are then no longer the last ones of the index buffer.
+    /// branches that cross in the skeleton stop piercing each other. Slower (an exact
+    /// refinement of the intersecting triangles: 0.17–1.1 M united triangles/s on the shipped
+    /// examples against welding's 1.3–3.3 M, docs/BENCHMARKS.md; docs/welded.md, "Solid
+    /// union"); junction triangles are then no longer the last ones of the index buffer.
     bool solidUnion = false;
     /// Junctions whose convex hull spans far past the branches (a web over a crotch where
     /// several branches leave at small angles) are subdivided and shrunk onto the branches'
