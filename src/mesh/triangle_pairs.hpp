@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 
@@ -16,14 +17,65 @@ namespace ramus::detail {
 
 using PairKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
+/// The plane through three points p, q, r, for CGAL::orientation(p, q, r, x) of many points x
+/// (strictlyOnOneSide): the cross product of q − p and r − p is computed once, and each x takes
+/// a dot product whose error is bounded per term. Where the bound leaves the sign open (x within
+/// rounding of the plane, corners on a line, tiny or huge coordinates) CGAL's exact predicate
+/// decides, so the answer is always CGAL's. CGAL's own filter recomputes the differences of
+/// p, q, r for every x; the searches of the solid union test most pairs of neighbouring
+/// triangles this way (tree_3d: 1.46 M of 1.76 M pairs share a corner), where that had been a
+/// fifth of their time.
+class PlaneSide {
+public:
+    using Point = PairKernel::Point_3;
+
+    PlaneSide(const Point& p, const Point& q, const Point& r) : p_(p), q_(q), r_(r) {
+        const double ax = q.x() - p.x(), ay = q.y() - p.y(), az = q.z() - p.z();
+        const double bx = r.x() - p.x(), by = r.y() - p.y(), bz = r.z() - p.z();
+        normal_ = {ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx};
+        size_ = {std::abs(ay * bz) + std::abs(az * by), std::abs(az * bx) + std::abs(ax * bz),
+                 std::abs(ax * by) + std::abs(ay * bx)};
+    }
+
+    /// CGAL::orientation(p, q, r, x).
+    CGAL::Orientation orientation(const Point& x) const {
+        const double dx = x.x() - p_.x(), dy = x.y() - p_.y(), dz = x.z() - p_.z();
+        const double det = normal_[0] * dx + normal_[1] * dy + normal_[2] * dz;
+        // |computed − exact| ≤ 8 u Σ size_i |d_i| to first order (u = 2^-53: each difference
+        // and product rounds once, each normal component carries 4 u of its size, the sum 2 u);
+        // kBound is 45 times that u and leaves room for the higher orders and the rounding of
+        // the bound itself.
+        const double bound =
+            kBound * (size_[0] * std::abs(dx) + size_[1] * std::abs(dy) + size_[2] * std::abs(dz));
+        if (bound > kSmallest && bound < kLargest) {
+            if (det > bound) return CGAL::POSITIVE;
+            if (det < -bound) return CGAL::NEGATIVE;
+        }
+        return CGAL::orientation(p_, q_, r_, x);
+    }
+
+private:
+    static constexpr double kBound = 5e-15;
+    // Outside these the products may have lost precision to underflow or overflowed.
+    static constexpr double kSmallest = 1e-250;
+    static constexpr double kLargest = 1e250;
+
+    const Point& p_;
+    const Point& q_;
+    const Point& r_;
+    std::array<double, 3> normal_{};
+    std::array<double, 3> size_{};
+};
+
 /// Whether the points `others` all lie strictly on one side of the plane through p, q, r
 /// (exact; never where those are on a line).
 inline bool strictlyOnOneSide(const PairKernel::Point_3& p, const PairKernel::Point_3& q,
                               const PairKernel::Point_3& r,
                               std::initializer_list<const PairKernel::Point_3*> others) {
+    const PlaneSide plane(p, q, r);
     CGAL::Orientation first = CGAL::COPLANAR;
     for (const PairKernel::Point_3* x : others) {
-        const CGAL::Orientation o = CGAL::orientation(p, q, r, *x);
+        const CGAL::Orientation o = plane.orientation(*x);
         if (o == CGAL::COPLANAR || (first != CGAL::COPLANAR && o != first)) return false;
         first = o;
     }
@@ -73,7 +125,7 @@ bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const st
         const int ra = unshared(aShares), rb = unshared(bShares);
         const Point& p = at(pa, ra + 1);
         const Point& q = at(pa, ra + 2);
-        return CGAL::coplanar(p, q, at(pa, ra), at(pb, rb)) &&
+        return PlaneSide(p, q, at(pa, ra)).orientation(at(pb, rb)) == CGAL::COPLANAR &&
                CGAL::coplanar_orientation(p, q, at(pa, ra), at(pb, rb)) == CGAL::POSITIVE &&
                !degenerate();
     }
