@@ -11,6 +11,7 @@
 #include <numeric>
 #include <string>
 
+#include "on_cores.hpp"
 #include "ramus/error.hpp"
 #include "ramus/welded_mesher.hpp"
 
@@ -37,12 +38,26 @@ public:
             radii_.push_back(computeEdgeRadii(*in.tree, params.tube));
     }
 
+    // The trees' bark, each tree's on a thread of its own where there are several: a forest's
+    // trees are meshed (and united) independently, and much of a union runs on one core
+    // (its bookkeeping over the whole surface). Appended, and reported, in the trees' order.
     Mesh bark(const Detail& d) const {
+        std::vector<Mesh> meshes(trees_.size());
+        std::vector<TreeMeshReport> reports(trees_.size());
+        detail::forEachOnThreads(
+            trees_.size(), std::min(trees_.size(), detail::machineCores()),
+            [&](std::size_t t) {
+                forTree(t, d, [&](const BranchTree& tree, const TubeMeshParams& tube) {
+                    meshes[t] = branches(tree, tube, d, reports[t]);
+                });
+            },
+            1);
         Mesh mesh;
         mesh.name = "tree";
-        forEachBark(d, [&](const BranchTree& tree, const TubeMeshParams& tube) {
-            appendMesh(mesh, branches(tree, tube, d));
-        });
+        for (std::size_t t = 0; t < trees_.size(); ++t) {
+            appendMesh(mesh, meshes[t]);
+            if (report_ != nullptr) addReport(*report_, reports[t]);
+        }
         return mesh;
     }
 
@@ -57,8 +72,10 @@ public:
         return count;
     }
 
-    // One tree's bark: tubes, or one welded surface (united when d.solidUnion).
-    Mesh branches(const BranchTree& tree, const TubeMeshParams& tube, const Detail& d) const {
+    // One tree's bark: tubes, or one welded surface (united when d.solidUnion); how its welding
+    // and union went goes into `report` (of this tree alone).
+    Mesh branches(const BranchTree& tree, const TubeMeshParams& tube, const Detail& d,
+                  TreeMeshReport& report) const {
         if (!params_.weldJunctions) return buildTubeMesh(tree, tube);
         WeldedMeshParams welded;
         welded.tube = tube;
@@ -66,30 +83,51 @@ public:
         welded.shrinkJunctions = !params_.convexJunctions;
         WeldReport weld;
         Mesh mesh = buildWeldedTreeMesh(tree, welded, &weld);
-        if (d.reported && report_ != nullptr) {
-            ++report_->weldedMeshes;
-            report_->weldFallbacks += weld.fallbacks;
-            report_->weldCrossings += weld.crossings;
-            report_->shrunkJunctions += weld.refinedJunctions;
+        if (d.reported) {
+            ++report.weldedMeshes;
+            report.weldFallbacks += weld.fallbacks;
+            report.weldCrossings += weld.crossings;
+            report.shrunkJunctions += weld.refinedJunctions;
         }
-        if (d.solidUnion && report_ != nullptr) {
+        if (d.solidUnion) {
             if (weld.solidUnion.applied) {
-                ++report_->unionsApplied;
-                if (weld.convexForUnion) ++report_->unionsOfHulls;
-                report_->tubedForUnion += weld.tubedForUnion;
-                report_->crossingsLeft += weld.solidUnion.remainingIntersections;
-                report_->pinchedEdges += weld.solidUnion.pinchedEdges;
-                report_->touchingPoints += weld.solidUnion.touchingPoints;
-                report_->crossingMoves += weld.solidUnion.crossingMoves;
-                report_->collapsedEdges += weld.solidUnion.collapsedEdges;
-                report_->unionAttempts += weld.solidUnion.attempts;
-                report_->postponedMoves += weld.solidUnion.postponedMoves;
-                report_->reunions += weld.solidUnion.reunions;
+                ++report.unionsApplied;
+                if (weld.convexForUnion) ++report.unionsOfHulls;
+                report.tubedForUnion += weld.tubedForUnion;
+                report.crossingsLeft += weld.solidUnion.remainingIntersections;
+                report.pinchedEdges += weld.solidUnion.pinchedEdges;
+                report.touchingPoints += weld.solidUnion.touchingPoints;
+                report.crossingMoves += weld.solidUnion.crossingMoves;
+                report.collapsedEdges += weld.solidUnion.collapsedEdges;
+                report.unionAttempts += weld.solidUnion.attempts;
+                report.postponedMoves += weld.solidUnion.postponedMoves;
+                report.reunions += weld.solidUnion.reunions;
             } else if (!mesh.primitives.empty()) {
-                if (report_->unionsFailed++ == 0) report_->firstFailure = weld.solidUnion.failure;
+                if (report.unionsFailed++ == 0) report.firstFailure = weld.solidUnion.failure;
             }
         }
         return mesh;
+    }
+
+    // `total` and then `more`: counts add up, the first failure stays the first.
+    static void addReport(TreeMeshReport& total, const TreeMeshReport& more) {
+        if (total.unionsFailed == 0) total.firstFailure = more.firstFailure;
+        total.weldedMeshes += more.weldedMeshes;
+        total.weldFallbacks += more.weldFallbacks;
+        total.weldCrossings += more.weldCrossings;
+        total.shrunkJunctions += more.shrunkJunctions;
+        total.unionsApplied += more.unionsApplied;
+        total.unionsFailed += more.unionsFailed;
+        total.unionsOfHulls += more.unionsOfHulls;
+        total.tubedForUnion += more.tubedForUnion;
+        total.crossingsLeft += more.crossingsLeft;
+        total.pinchedEdges += more.pinchedEdges;
+        total.touchingPoints += more.touchingPoints;
+        total.crossingMoves += more.crossingMoves;
+        total.collapsedEdges += more.collapsedEdges;
+        total.unionAttempts += more.unionAttempts;
+        total.postponedMoves += more.postponedMoves;
+        total.reunions += more.reunions;
     }
 
     Mesh leaves(const Detail& d) const {
@@ -127,17 +165,20 @@ private:
     // keep the whole tree's radii (as widths), so hiding changes nothing else.
     template <class F>
     void forEachBark(const Detail& d, F f) const {
+        for (std::size_t t = 0; t < trees_.size(); ++t) forTree(t, d, f);
+    }
+    // f(tree, its tube parameters) for tree t at detail d (forEachBark).
+    template <class F>
+    void forTree(std::size_t t, const Detail& d, F f) const {
         TubeMeshParams tube = params_.tube;
         tube.minSegments = d.minSegments;
         tube.maxSegments = d.maxSegments;
-        for (std::size_t t = 0; t < trees_.size(); ++t) {
-            if (d.prune == 0) {
-                f(*trees_[t].tree, tube);
-            } else {
-                TubeMeshParams widths = tube;
-                widths.radiusMode = RadiusMode::Widths;
-                f(prunedTree(t, d.prune), widths);
-            }
+        if (d.prune == 0) {
+            f(*trees_[t].tree, tube);
+        } else {
+            TubeMeshParams widths = tube;
+            widths.radiusMode = RadiusMode::Widths;
+            f(prunedTree(t, d.prune), widths);
         }
     }
 

@@ -12,6 +12,7 @@
 #include "ramus/scene.hpp"
 #include "ramus/tree_textures.hpp"
 #include "ramus/tree_wind.hpp"
+#include "same_mesh.hpp"
 
 namespace ramus {
 namespace {
@@ -69,6 +70,41 @@ TEST(TreeAsset, ForestOfTwoTreesHasOneBarkAndOneLeavesPrimitiveWithWind) {
         writeGlb(makeSingleMeshScene(buildTreeMesh(inputs, textured), "tree"),
                  std::string(dir) + "/tree_asset_forest_textured.glb");
     }
+}
+
+// The trees of a forest are welded and united on threads of their own: the forest is still
+// each tree's mesh in the trees' order, and its report the sum of theirs.
+TEST(TreeAsset, ForestIsItsTreesInOrderWhenMeshedOnThreads) {
+    const BranchTree a = bushyTree(5, 3), b = bushyTree(4, 4), c = bushyTree(5, 5);
+    const TreeMeshInput inputs[] = {{&a, {}, {}, {}}, {&b, {}, {}, {}}, {&c, {}, {}, {}}};
+    TreeMeshParams params;
+    params.tube.leafRadius = 0.12;  // thick enough for neighbouring branches to overlap
+    params.weldJunctions = true;
+    params.solidUnion = true;
+    TreeMeshReport forestReport;
+    const Mesh forest = buildTreeMesh(inputs, params, &forestReport);
+    Mesh alone;
+    alone.name = "tree";
+    TreeMeshReport sum;
+    for (const TreeMeshInput& input : inputs) {
+        TreeMeshReport report;
+        appendMesh(alone, buildTreeMesh(std::span(&input, 1), params, &report));
+        sum.weldedMeshes += report.weldedMeshes;
+        sum.unionsApplied += report.unionsApplied;
+        sum.unionAttempts += report.unionAttempts;
+        sum.crossingMoves += report.crossingMoves;
+        sum.shrunkJunctions += report.shrunkJunctions;
+    }
+    mergePrimitivesByMaterial(alone);
+    test::expectSameMesh(forest, alone, "forest against its trees alone");
+    EXPECT_EQ(forestReport.weldedMeshes, 3u);
+    EXPECT_EQ(forestReport.unionsApplied, 3u);
+    EXPECT_EQ(forestReport.weldedMeshes, sum.weldedMeshes);
+    EXPECT_EQ(forestReport.unionsApplied, sum.unionsApplied);
+    EXPECT_EQ(forestReport.unionAttempts, sum.unionAttempts);
+    EXPECT_EQ(forestReport.crossingMoves, sum.crossingMoves);
+    EXPECT_EQ(forestReport.shrunkJunctions, sum.shrunkJunctions);
+    EXPECT_EQ(forestReport.unionsFailed, 0u);
 }
 
 // uvAspect = texture height / width keeps texels square on the bark: along a straight tube of
