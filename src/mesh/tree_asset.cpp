@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <string>
 
@@ -18,6 +19,27 @@
 namespace ramus {
 
 namespace {
+
+// `total` and then `more`: counts add up, the first failure stays the first.
+void addReport(TreeMeshReport& total, const TreeMeshReport& more) {
+    if (total.unionsFailed == 0) total.firstFailure = more.firstFailure;
+    total.weldedMeshes += more.weldedMeshes;
+    total.weldFallbacks += more.weldFallbacks;
+    total.weldCrossings += more.weldCrossings;
+    total.shrunkJunctions += more.shrunkJunctions;
+    total.unionsApplied += more.unionsApplied;
+    total.unionsFailed += more.unionsFailed;
+    total.unionsOfHulls += more.unionsOfHulls;
+    total.tubedForUnion += more.tubedForUnion;
+    total.crossingsLeft += more.crossingsLeft;
+    total.pinchedEdges += more.pinchedEdges;
+    total.touchingPoints += more.touchingPoints;
+    total.crossingMoves += more.crossingMoves;
+    total.collapsedEdges += more.collapsedEdges;
+    total.unionAttempts += more.unionAttempts;
+    total.postponedMoves += more.postponedMoves;
+    total.reunions += more.reunions;
+}
 
 // What one level draws.
 struct Detail {
@@ -31,17 +53,17 @@ struct Detail {
 
 class TreeMesher {
 public:
-    TreeMesher(std::span<const TreeMeshInput> trees, const TreeMeshParams& params,
-               TreeMeshReport* report)
-        : trees_(trees), params_(params), report_(report) {
+    TreeMesher(std::span<const TreeMeshInput> trees, const TreeMeshParams& params)
+        : trees_(trees), params_(params) {
         for (const TreeMeshInput& in : trees)
             radii_.push_back(computeEdgeRadii(*in.tree, params.tube));
     }
 
     // The trees' bark, each tree's on a thread of its own where there are several: a forest's
     // trees are meshed (and united) independently, and much of a union runs on one core
-    // (its bookkeeping over the whole surface). Appended, and reported, in the trees' order.
-    Mesh bark(const Detail& d) const {
+    // (its bookkeeping over the whole surface). Appended, and added to `report` (where given),
+    // in the trees' order.
+    Mesh bark(const Detail& d, TreeMeshReport* report = nullptr) const {
         std::vector<Mesh> meshes(trees_.size());
         std::vector<TreeMeshReport> reports(trees_.size());
         detail::forEachOnThreads(
@@ -56,7 +78,7 @@ public:
         mesh.name = "tree";
         for (std::size_t t = 0; t < trees_.size(); ++t) {
             appendMesh(mesh, meshes[t]);
-            if (report_ != nullptr) addReport(*report_, reports[t]);
+            if (report != nullptr) addReport(*report, reports[t]);
         }
         return mesh;
     }
@@ -109,27 +131,6 @@ public:
         return mesh;
     }
 
-    // `total` and then `more`: counts add up, the first failure stays the first.
-    static void addReport(TreeMeshReport& total, const TreeMeshReport& more) {
-        if (total.unionsFailed == 0) total.firstFailure = more.firstFailure;
-        total.weldedMeshes += more.weldedMeshes;
-        total.weldFallbacks += more.weldFallbacks;
-        total.weldCrossings += more.weldCrossings;
-        total.shrunkJunctions += more.shrunkJunctions;
-        total.unionsApplied += more.unionsApplied;
-        total.unionsFailed += more.unionsFailed;
-        total.unionsOfHulls += more.unionsOfHulls;
-        total.tubedForUnion += more.tubedForUnion;
-        total.crossingsLeft += more.crossingsLeft;
-        total.pinchedEdges += more.pinchedEdges;
-        total.touchingPoints += more.touchingPoints;
-        total.crossingMoves += more.crossingMoves;
-        total.collapsedEdges += more.collapsedEdges;
-        total.unionAttempts += more.unionAttempts;
-        total.postponedMoves += more.postponedMoves;
-        total.reunions += more.reunions;
-    }
-
     Mesh leaves(const Detail& d) const {
         LeafParams leaf = params_.leaf;
         leaf.keep = d.keep;
@@ -148,17 +149,16 @@ public:
         return mesh;
     }
 
-    Mesh both(const Detail& d) const {
-        Mesh mesh = bark(d);
+    Mesh both(const Detail& d, TreeMeshReport* report) const {
+        Mesh mesh = bark(d, report);
         appendMesh(mesh, leaves(d));
         mergePrimitivesByMaterial(mesh);
         return mesh;
     }
 
-    std::size_t pruneOrderSize() {
-        buildPruneOrder();
-        return order_.size();
-    }
+    // The order the LOD levels prune edges by (buildPruneOrder), made before they share it.
+    void preparePruning() { buildPruneOrder(); }
+    std::size_t pruneOrderSize() const { return order_.size(); }
 
 private:
     // Calls f(tree, its tube parameters) for the bark of every tree at detail d: pruned trees
@@ -183,7 +183,7 @@ private:
     }
 
     // Edges thinnest first (ties: the newest node first, so outer twigs go before inner ones)
-    // over all trees; made on first use.
+    // over all trees.
     void buildPruneOrder() {
         if (!order_.empty()) return;
         for (std::size_t t = 0; t < trees_.size(); ++t) {
@@ -217,7 +217,6 @@ private:
 
     std::span<const TreeMeshInput> trees_;
     const TreeMeshParams& params_;
-    TreeMeshReport* report_;
     std::vector<std::vector<double>> radii_;
     std::vector<std::pair<std::size_t, std::size_t>> order_;
 };
@@ -250,14 +249,15 @@ std::vector<std::pair<int, int>> segmentSteps(int minSegments, int maxSegments) 
 // The bark detail closest to `target` triangles: the first segment step at or below it when
 // that is within 3 %, else pruning (bisection on the number of pruned edges) from the step
 // before it.
-void planBark(TreeMesher& mesher, double target, Detail& d) {
+void planBark(const TreeMesher& mesher, double target, Detail& d) {
     const auto steps = segmentSteps(d.minSegments, d.maxSegments);
+    std::vector<double> stepCounts(steps.size());
     std::size_t above = 0;
     std::size_t j = 0;
     for (; j < steps.size(); ++j) {
         Detail trial = d;
         std::tie(trial.minSegments, trial.maxSegments) = steps[j];
-        const double count = static_cast<double>(mesher.barkTriangles(trial));
+        const double count = stepCounts[j] = static_cast<double>(mesher.barkTriangles(trial));
         if (count <= target) {
             if (j == 0 || count >= 0.97 * target) {
                 std::tie(d.minSegments, d.maxSegments) = steps[j];
@@ -267,12 +267,19 @@ void planBark(TreeMesher& mesher, double target, Detail& d) {
         }
         above = j;
     }
-    std::tie(d.minSegments, d.maxSegments) = steps[j < steps.size() ? j - 1 : above];
+    const std::size_t step = j < steps.size() ? j - 1 : above;
+    std::tie(d.minSegments, d.maxSegments) = steps[step];
     std::size_t lo = 0, hi = mesher.pruneOrderSize();  // count(lo) > target
+    // Each detail is meshed once (welded bark takes as long as the final mesh's welding).
+    std::map<std::size_t, double> counted{{0, stepCounts[step]}};
     auto count = [&](std::size_t prune) {
-        Detail trial = d;
-        trial.prune = prune;
-        return static_cast<double>(mesher.barkTriangles(trial));
+        const auto [at, added] = counted.try_emplace(prune, 0.0);
+        if (added) {
+            Detail trial = d;
+            trial.prune = prune;
+            at->second = static_cast<double>(mesher.barkTriangles(trial));
+        }
+        return at->second;
     };
     if (count(hi) > target) {
         d.prune = hi;
@@ -303,7 +310,7 @@ Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& p
     full.maxSegments = std::max(params.tube.maxSegments, params.tube.minSegments);
     full.solidUnion = params.solidUnion;
     full.reported = true;
-    return TreeMesher(trees, params, report).both(full);
+    return TreeMesher(trees, params).both(full, report);
 }
 
 std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
@@ -316,7 +323,7 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
         }
     }
     if (params.leaves) validateLeafParams(params.leaf);
-    TreeMesher mesher(trees, params, report);
+    TreeMesher mesher(trees, params);
     Detail full;
     full.minSegments = std::clamp(params.tube.minSegments, 3, 4096);
     full.maxSegments = std::clamp(params.tube.maxSegments, full.minSegments, 4096);
@@ -328,33 +335,43 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
         params.leaves ? static_cast<double>(triangles(mesher.leaves(cards))) : leaves0;
     const double total0 = bark0 + leaves0;
 
-    std::vector<TreeLod> lods;
-    for (std::size_t i = 0; i < ratios.size(); ++i) {
-        const double target = std::round(ratios[i] * total0);
-        Detail d = full;
-        if (ratios[i] < 1.0) {
-            planLeaves(ratios[i] * leaves0, leaves0, cards0, true, d);
-            const double leafShare = d.keep * (d.cards ? cards0 : leaves0);
-            double barkTarget = target - leafShare;
-            if (barkTarget > bark0) {  // the bark cannot take the rest: the leaves must
-                barkTarget = bark0;
-                planLeaves(target - bark0, leaves0, cards0, false, d);
+    // The levels are planned and meshed on threads of their own (each plans by meshing trial
+    // details, the finer ones are united), and reported in their order.
+    mesher.preparePruning();
+    std::vector<TreeLod> lods(ratios.size());
+    std::vector<TreeMeshReport> reports(ratios.size());
+    detail::forEachOnThreads(
+        ratios.size(), std::min(ratios.size(), detail::machineCores()),
+        [&](std::size_t i) {
+            const double target = std::round(ratios[i] * total0);
+            Detail d = full;
+            if (ratios[i] < 1.0) {
+                planLeaves(ratios[i] * leaves0, leaves0, cards0, true, d);
+                const double leafShare = d.keep * (d.cards ? cards0 : leaves0);
+                double barkTarget = target - leafShare;
+                if (barkTarget > bark0) {  // the bark cannot take the rest: the leaves must
+                    barkTarget = bark0;
+                    planLeaves(target - bark0, leaves0, cards0, false, d);
+                }
+                planBark(mesher, barkTarget, d);
             }
-            planBark(mesher, barkTarget, d);
-        }
-        TreeLod lod;
-        lod.ratio = ratios[i];
-        lod.targetTriangles = static_cast<std::size_t>(target);
-        d.solidUnion = params.solidUnion;
-        d.reported = true;
-        lod.mesh = mesher.both(d);
-        lod.mesh.name = "tree_LOD" + std::to_string(i);
-        lod.minSegments = d.minSegments;
-        lod.maxSegments = d.maxSegments;
-        lod.prunedNodes = d.prune;
-        lod.leafKeep = d.keep;
-        lod.leafCards = d.cards;
-        lods.push_back(std::move(lod));
+            TreeLod lod;
+            lod.ratio = ratios[i];
+            lod.targetTriangles = static_cast<std::size_t>(target);
+            d.solidUnion = params.solidUnion;
+            d.reported = true;
+            lod.mesh = mesher.both(d, &reports[i]);
+            lod.mesh.name = "tree_LOD" + std::to_string(i);
+            lod.minSegments = d.minSegments;
+            lod.maxSegments = d.maxSegments;
+            lod.prunedNodes = d.prune;
+            lod.leafKeep = d.keep;
+            lod.leafCards = d.cards;
+            lods[i] = std::move(lod);
+        },
+        1);
+    if (report != nullptr) {
+        for (const TreeMeshReport& r : reports) addReport(*report, r);
     }
     return lods;
 }

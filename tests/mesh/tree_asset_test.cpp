@@ -151,6 +151,37 @@ TEST(TreeAsset, LodsLandWithinTenPercentOfTheirTargets) {
               primitiveTriangles(lods[0].mesh, "leaves"));
 }
 
+// The levels are planned and meshed on threads of their own: each is the level built alone, and
+// the report adds theirs up in order.
+TEST(TreeAsset, LodLevelsMeshedOnThreadsAreEachLevelAlone) {
+    const BranchTree a = bushyTree(6, 7), b = bushyTree(5, 8);
+    const TreeMeshInput inputs[] = {{&a, {}, {}, {}}, {&b, {}, {}, {}}};
+    TreeMeshParams params;
+    params.tube.leafRadius = 0.12;
+    params.weldJunctions = true;
+    params.solidUnion = true;
+    const double ratios[] = {1.0, 0.4, 0.15};
+    TreeMeshReport report;
+    const std::vector<TreeLod> lods = buildTreeLods(inputs, params, ratios, &report);
+    ASSERT_EQ(lods.size(), 3u);
+    TreeMeshReport sum;
+    for (std::size_t i = 0; i < lods.size(); ++i) {
+        TreeMeshReport alone;
+        std::vector<TreeLod> level = buildTreeLods(inputs, params, {&ratios[i], 1}, &alone);
+        level[0].mesh.name = lods[i].mesh.name;
+        test::expectSameMesh(lods[i].mesh, level[0].mesh, "level " + std::to_string(i));
+        EXPECT_EQ(lods[i].prunedNodes, level[0].prunedNodes);
+        sum.weldedMeshes += alone.weldedMeshes;
+        sum.unionsApplied += alone.unionsApplied;
+        sum.unionAttempts += alone.unionAttempts;
+    }
+    EXPECT_EQ(report.weldedMeshes, 6u);  // two trees, three levels
+    EXPECT_EQ(report.weldedMeshes, sum.weldedMeshes);
+    EXPECT_EQ(report.unionsApplied, sum.unionsApplied);
+    EXPECT_EQ(report.unionAttempts, sum.unionAttempts);
+    EXPECT_GT(lods[0].mesh.triangleCount(), lods[2].mesh.triangleCount());
+}
+
 TEST(TreeAsset, LodRatiosOutsideTheUnitIntervalAreErrors) {
     const BranchTree tree = bushyTree(3, 1);
     const TreeMeshInput input{&tree, {}, {}, {}};
