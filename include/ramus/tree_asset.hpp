@@ -73,7 +73,8 @@ struct TreeMeshReport {
 
 /// The full-detail mesh "tree" of all `trees`: tubes, polygons as leaves (buildLeafPolygons),
 /// generated leaves when params.leaves; then mergePrimitivesByMaterial, so a forest has one
-/// "bark" and one "leaves" primitive. Nothing drawn → empty mesh.
+/// "bark" and one "leaves" primitive. Nothing drawn → empty mesh. A forest's trees are meshed
+/// (welded, united) on threads of their own; the result does not depend on them.
 Mesh buildTreeMesh(std::span<const TreeMeshInput> trees, const TreeMeshParams& params,
                    TreeMeshReport* report = nullptr);
 
@@ -96,7 +97,8 @@ struct TreeLod {
 /// placement are always those of the whole tree. ratios[i] in (0, 1]; LOD 0 is the full mesh
 /// when ratios[0] = 1. The result's triangle counts land near ratio × (full count) — within
 /// a few percent unless the trunk alone is above the target. Throws Error for ratios outside
-/// (0, 1] or an empty list.
+/// (0, 1] or an empty list. The levels are planned and meshed on threads of their own; the
+/// result does not depend on them, and `report` adds up the levels' in their order.
 std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
                                    const TreeMeshParams& params, std::span<const double> ratios,
                                    TreeMeshReport* report = nullptr);
