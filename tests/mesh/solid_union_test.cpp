@@ -188,6 +188,32 @@ TEST(SolidUnion, DenseWeldedPlantsBecomeOneSurface) {
     EXPECT_FALSE(expectOneCleanSurface("abop_1_27_n4", tree, WeldedMeshParams{}));  // shrunk
 }
 
+// Levels of detail of united bark land near their share of the united full detail, although
+// the union changes the bark's count by a factor that grows with the dense branches a level
+// keeps: planned on the welded count alone, ABOP 1.24f's coarsest level had 13.4 % of the full
+// detail's triangles for 15 %, 1.27's 10.6 % (tree_asset.cpp, buildTreeLods).
+TEST(SolidUnion, UnitedLodsLandNearTheirShareOfTheUnitedFullDetail) {
+    const BranchTree tree = growExample("abop_1_24f", -1);
+    const TreeMeshInput input{&tree, {}, {}, {}};
+    TreeMeshParams params;
+    params.weldJunctions = true;
+    params.solidUnion = true;
+    const double ratios[] = {1.0, 0.4, 0.15};
+    TreeMeshReport report;
+    const std::vector<TreeLod> lods = buildTreeLods({&input, 1}, params, ratios, &report);
+    ASSERT_EQ(lods.size(), 3u);
+    const double full = static_cast<double>(lods[0].mesh.triangleCount());
+    EXPECT_EQ(lods[0].targetTriangles, lods[0].mesh.triangleCount());
+    for (const TreeLod& lod : lods) {
+        SCOPED_TRACE(lod.mesh.name);
+        EXPECT_NEAR(static_cast<double>(lod.mesh.triangleCount()), lod.ratio * full,
+                    0.05 * lod.ratio * full);
+        EXPECT_NEAR(static_cast<double>(lod.targetTriangles), lod.ratio * full, 1.0);
+    }
+    EXPECT_EQ(report.unionsApplied, 3u);  // one kept union a level
+    EXPECT_EQ(report.crossingsLeft + report.pinchedEdges + report.touchingPoints, 0u);
+}
+
 // Every shipped example, the 26 L-systems and every tree of the 10 colonization configs (make
 // union-check, Release build: minutes, so not in make test). Before session 17's separation of
 // rounded crossings, 1.24a, 1.24c, 1.31a and 2.8c kept 5, 1, 1 and 11 pairs (docs/welded.md).
