@@ -31,8 +31,9 @@ struct TreeMeshParams {
     bool weldJunctions = false;
     /// With weldJunctions: replace each tree's welded bark by the surface of the union of its
     /// pieces (unionClosedSurfaces): one closed surface without self-intersections where the
-    /// welder leaves overlapping pieces. Seconds for 10⁵ triangles, so LODs are planned on the
-    /// welded counts and only the final levels are united.
+    /// welder leaves overlapping pieces. A fraction of a second for 10⁵ triangles, so LODs are
+    /// planned on welded bark and only each level's candidates (up to 5) are united, aiming at
+    /// the level's share of the united full detail (docs/welded.md, Solid union).
     bool solidUnion = false;
     /// With weldJunctions: keep every junction the convex hull of its rings
     /// (WeldedMeshParams::shrinkJunctions off): fewer triangles, but webs over the crotches
