@@ -69,7 +69,7 @@ public:
         std::vector<Mesh> meshes(trees_.size());
         std::vector<TreeMeshReport> reports(trees_.size());
         detail::forEachOnThreads(
-            trees_.size(), std::min(trees_.size(), detail::machineCores()),
+            trees_.size(), std::min(trees_.size(), treeThreads_),
             [&](std::size_t t) {
                 forTree(t, d, [&](const BranchTree& tree, const TubeMeshParams& tube) {
                     meshes[t] = branches(tree, tube, d, reports[t]);
@@ -158,6 +158,14 @@ public:
         return mesh;
     }
 
+    // Meshing `ways` details at once (LOD levels on threads of their own): each meshes its
+    // trees on its share of the cores, so that a forest's levels do not run levels × trees
+    // unions at once (memory) on a machine with many cores.
+    void shareCores(std::size_t ways) {
+        treeThreads_ =
+            std::max<std::size_t>(1, detail::machineCores() / std::max<std::size_t>(1, ways));
+    }
+
     // The order the LOD levels prune edges by (buildPruneOrder), made before they share it.
     void preparePruning() { buildPruneOrder(); }
     std::size_t pruneOrderSize() const { return order_.size(); }
@@ -220,6 +228,7 @@ private:
     std::span<const TreeMeshInput> trees_;
     const TreeMeshParams& params_;
     std::vector<std::vector<double>> radii_;
+    std::size_t treeThreads_ = detail::machineCores();  // trees meshed at once (bark)
     std::vector<std::pair<std::size_t, std::size_t>> order_;
 };
 
@@ -458,10 +467,12 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
     // The levels are planned and meshed on threads of their own (each plans by meshing trial
     // details, the finer ones are united), and reported in their order.
     mesher.preparePruning();
+    const std::size_t levelThreads = std::min(ratios.size(), detail::machineCores());
+    mesher.shareCores(levelThreads);
     std::vector<TreeLod> lods(ratios.size());
     std::vector<TreeMeshReport> reports(ratios.size());
     detail::forEachOnThreads(
-        ratios.size(), std::min(ratios.size(), detail::machineCores()),
+        ratios.size(), levelThreads,
         [&](std::size_t i) {
             const double target = std::round(ratios[i] * total0);
             Detail d = full;
