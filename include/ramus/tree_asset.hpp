@@ -40,6 +40,11 @@ struct TreeMeshParams {
     /// where several branches leave at small angles. (Without it, a union whose shrunk
     /// junctions do not unite cleanly unites the hulls: WeldReport::convexForUnion.)
     bool convexJunctions = false;
+    /// How many trees (of a forest) and LOD levels are meshed at once, on threads of their own:
+    /// 0 = one per core. 1 where the caller already runs one job per core (`ramus batch`), so
+    /// that jobs × trees × levels welds and unions are not in memory at once. The result does
+    /// not depend on it.
+    std::size_t threads = 0;
     bool leaves = false;  ///< generate leaves (buildLeafMesh) besides the polygons
     LeafParams leaf;      ///< generated leaves, and the atlas, seed and LOD keep of the polygons
     /// The `{ . }` polygons' material (their primitive is named after it): they have their own

@@ -162,10 +162,12 @@ public:
     // trees on its share of the cores, so that a forest's levels do not run levels × trees
     // unions at once (memory) on a machine with many cores.
     void shareCores(std::size_t ways) {
-        treeThreads_ =
-            std::max<std::size_t>(1, detail::machineCores() / std::max<std::size_t>(1, ways));
+        treeThreads_ = std::max<std::size_t>(1, threads() / std::max<std::size_t>(1, ways));
     }
-
+    // How many details, or trees, are meshed at once (TreeMeshParams::threads).
+    std::size_t threads() const {
+        return params_.threads > 0 ? params_.threads : detail::machineCores();
+    }
     // The order the LOD levels prune edges by (buildPruneOrder), made before they share it.
     void preparePruning() { buildPruneOrder(); }
     std::size_t pruneOrderSize() const { return order_.size(); }
@@ -228,7 +230,7 @@ private:
     std::span<const TreeMeshInput> trees_;
     const TreeMeshParams& params_;
     std::vector<std::vector<double>> radii_;
-    std::size_t treeThreads_ = detail::machineCores();  // trees meshed at once (bark)
+    std::size_t treeThreads_ = threads();  // trees meshed at once (bark)
     std::vector<std::pair<std::size_t, std::size_t>> order_;
 };
 
@@ -467,7 +469,7 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
     // The levels are planned and meshed on threads of their own (each plans by meshing trial
     // details, the finer ones are united), and reported in their order.
     mesher.preparePruning();
-    const std::size_t levelThreads = std::min(ratios.size(), detail::machineCores());
+    const std::size_t levelThreads = std::min(ratios.size(), mesher.threads());
     mesher.shareCores(levelThreads);
     std::vector<TreeLod> lods(ratios.size());
     std::vector<TreeMeshReport> reports(ratios.size());

@@ -97,6 +97,9 @@ TEST(TreeAsset, ForestIsItsTreesInOrderWhenMeshedOnThreads) {
     }
     mergePrimitivesByMaterial(alone);
     test::expectSameMesh(forest, alone, "forest against its trees alone");
+    TreeMeshParams oneThread = params;  // as `ramus batch` meshes each item
+    oneThread.threads = 1;
+    test::expectSameMesh(buildTreeMesh(inputs, oneThread), forest, "forest on one thread");
     EXPECT_EQ(forestReport.weldedMeshes, 3u);
     EXPECT_EQ(forestReport.unionsApplied, 3u);
     EXPECT_EQ(forestReport.weldedMeshes, sum.weldedMeshes);
@@ -174,6 +177,13 @@ TEST(TreeAsset, LodLevelsMeshedOnThreadsAreEachLevelAlone) {
         sum.weldedMeshes += alone.weldedMeshes;
         sum.unionsApplied += alone.unionsApplied;
         sum.unionAttempts += alone.unionAttempts;
+    }
+    TreeMeshParams oneThread = params;
+    oneThread.threads = 1;
+    const std::vector<TreeLod> sequential = buildTreeLods(inputs, oneThread, ratios);
+    ASSERT_EQ(sequential.size(), lods.size());
+    for (std::size_t i = 0; i < lods.size(); ++i) {
+        test::expectSameMesh(sequential[i].mesh, lods[i].mesh, "level on one thread");
     }
     EXPECT_EQ(report.weldedMeshes, 6u);  // two trees, three levels
     EXPECT_EQ(report.weldedMeshes, sum.weldedMeshes);

@@ -150,7 +150,8 @@ void makeLsystem(const BatchManifest& manifest, const BatchItem& item, const fs:
     const ModuleString word = deriveLSystem(system, derive);
     const TurtleResult shape =
         interpretTurtle(word, system.symbols, turtleParamsFrom(system.settings));
-    const AssetSettings assets = finishAssets(AssetSettings{});  // as `ramus lsystem FILE`
+    AssetSettings assets = finishAssets(AssetSettings{});  // as `ramus lsystem FILE`
+    assets.mesh.threads = 1;                               // the batch runs an item per core
     writeModel(plantModel(shape, assets.mesh, assets.lods).scene(), dir, job, item);
 }
 
@@ -159,7 +160,8 @@ void makeColonize(const BatchManifest& manifest, const BatchItem& item, const fs
     ColonizeConfig config = colonizeConfigOf(manifest, job.inputs);
     config.seed = itemSeed(manifest, item);
     const ColonizeResult result = growFromConfig(config, configAttractionPoints(config));
-    const AssetSettings assets = colonizeAssets(config);  // as `ramus colonize CONFIG`
+    AssetSettings assets = colonizeAssets(config);  // as `ramus colonize CONFIG`
+    assets.mesh.threads = 1;                        // the batch runs an item per core
     writeModel(forestModel(result.trees, assets.mesh, assets.lods).scene(), dir, job, item);
 }
 
