@@ -225,7 +225,7 @@ std::vector<BoxPair> pairsByBoxes(std::size_t n, Task task,
     const std::size_t tasks = (n + kBoxesPerTask - 1) / kBoxesPerTask;
     const std::size_t before = found.size();
     found.resize(before + tasks);
-    forEachOnCores(tasks, [&](std::size_t t) {
+    forEachCoarseOnCores(tasks, [&](std::size_t t) {
         task(static_cast<std::uint32_t>(t * kBoxesPerTask),
              static_cast<std::uint32_t>(std::min(n, (t + 1) * kBoxesPerTask)), found[before + t]);
     });
@@ -244,7 +244,7 @@ std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHie
     const CellTable table(boxes, levels, [](std::uint32_t) { return true; });
     const std::size_t bucketTasks = (table.buckets() + kBucketsPerTask - 1) / kBucketsPerTask;
     std::vector<std::vector<BoxPair>> found(bucketTasks);
-    forEachOnCores(bucketTasks, [&](std::size_t task) {
+    forEachCoarseOnCores(bucketTasks, [&](std::size_t task) {
         std::vector<Box3> local;  // the boxes of one cell, side by side
         const std::size_t end = std::min(table.buckets(), (task + 1) * kBucketsPerTask);
         for (std::size_t b = task * kBucketsPerTask; b < end; ++b) {

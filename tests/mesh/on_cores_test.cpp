@@ -13,7 +13,9 @@
 namespace ramus {
 namespace {
 
+using detail::coarseWorkersFor;
 using detail::CoreTeam;
+using detail::forEachCoarseOnCores;
 using detail::forEachOnCores;
 using detail::workersFor;
 
@@ -28,13 +30,23 @@ TEST(OnCores, WorkersGrowWithTheTasksUpToTheCores) {
     EXPECT_EQ(CoreTeam().workersFor(1 << 20), workersFor(1 << 20, detail::machineCores()));
 }
 
+TEST(OnCores, CoarseTasksEachGetAThreadUpToTheCores) {
+    EXPECT_EQ(coarseWorkersFor(0, 8), 1u);
+    EXPECT_EQ(coarseWorkersFor(1, 8), 1u);
+    EXPECT_EQ(coarseWorkersFor(2, 8), 2u);  // where workersFor gives one thread for 63 tasks
+    EXPECT_EQ(coarseWorkersFor(23, 2), 2u);
+    EXPECT_EQ(coarseWorkersFor(23, 8), 4u);
+    EXPECT_EQ(coarseWorkersFor(23, 0), 1u);  // cores unknown
+}
+
 // Runs `forEach` over sizes around the block size and well beyond, and checks that every slot
-// was written once, by a thread whose number is in range.
+// was written once, by a thread whose number is below workers(n, cores).
 template <class ForEach>
-void expectEveryTaskOnce(ForEach forEach) {
-    for (const std::size_t n : {0u, 1u, 63u, 64u, 65u, 200u, 1000u, 4097u}) {
+void expectEveryTaskOnce(ForEach forEach,
+                         std::size_t (*workersOf)(std::size_t, std::size_t) = workersFor) {
+    for (const std::size_t n : {0u, 1u, 2u, 63u, 64u, 65u, 200u, 1000u, 4097u}) {
         SCOPED_TRACE(n);
-        const std::size_t workers = workersFor(n, detail::machineCores());
+        const std::size_t workers = workersOf(n, detail::machineCores());
         std::vector<std::uint32_t> runs(n, 0), squares(n, 0);
         std::vector<std::size_t> worker(n, 99);
         forEach(n, [&](std::size_t i, std::size_t w) {
@@ -55,6 +67,11 @@ TEST(OnCores, ForEachOnCoresRunsEveryTaskOnce) {
     std::vector<int> plain(500, 0);  // a task taking the index alone
     forEachOnCores(plain.size(), [&](std::size_t i) { plain[i] = static_cast<int>(i) + 1; });
     for (std::size_t i = 0; i < plain.size(); ++i) EXPECT_EQ(plain[i], static_cast<int>(i) + 1);
+}
+
+TEST(OnCores, ForEachCoarseOnCoresRunsEveryTaskOnce) {
+    expectEveryTaskOnce([](std::size_t n, const auto& task) { forEachCoarseOnCores(n, task); },
+                        coarseWorkersFor);
 }
 
 TEST(OnCores, TeamRunsEveryTaskOnceOverManyBatches) {
