@@ -8,11 +8,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <future>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "on_cores.hpp"
 #include "ramus/error.hpp"
@@ -86,9 +90,30 @@ public:
     }
 
     // The bark's triangles at detail d: tubes are counted without being built (the LOD
-    // planning tries up to a few dozen details per level), welded bark is meshed.
+    // planning tries up to a few dozen details per level), welded bark is meshed, each detail
+    // once: the levels (on threads of their own) bisect the same segment steps, and a united
+    // level plans its bark again each round, near the details it tried before (ABOP 1.24a,
+    // `--union --lods 1,0.4,0.15`: the levels' bark planning had taken 4.2 s on their two
+    // threads, their unions 1.4 s).
     std::size_t barkTriangles(const Detail& d) const {
-        if (params_.weldJunctions) return bark(d).triangleCount();
+        if (params_.weldJunctions) {
+            std::promise<std::size_t> counting;
+            std::shared_future<std::size_t> count;
+            {
+                const std::lock_guard lock(weldedCountsMutex_);
+                const auto [at, added] = weldedCounts_.try_emplace(
+                    std::tuple{d.minSegments, d.maxSegments, d.prune, d.solidUnion});
+                if (added) at->second = counting.get_future().share();
+                count = at->second;
+                if (!added) return count.get();  // counted, or being counted by another level
+            }
+            try {
+                counting.set_value(bark(d).triangleCount());
+            } catch (...) {
+                counting.set_exception(std::current_exception());
+            }
+            return count.get();
+        }
         std::size_t count = 0;
         forEachBark(d, [&](const BranchTree& tree, const TubeMeshParams& tube) {
             count += countTubeTriangles(tree, tube);
@@ -171,8 +196,16 @@ public:
     // The order the LOD levels prune edges by (buildPruneOrder), made before they share it.
     void preparePruning() { buildPruneOrder(); }
     std::size_t pruneOrderSize() const { return order_.size(); }
+    // Whether barkTriangles meshes the bark (welded) rather than counting tubes.
+    bool trialsAreMeshes() const { return params_.weldJunctions; }
 
 private:
+    // barkTriangles of welded bark, by segments, pruned edges and union (each meshed by the
+    // first level to ask for it; the others wait for it).
+    mutable std::mutex weldedCountsMutex_;
+    mutable std::map<std::tuple<int, int, std::size_t, bool>, std::shared_future<std::size_t>>
+        weldedCounts_;
+
     // Calls f(tree, its tube parameters) for the bark of every tree at detail d: pruned trees
     // keep the whole tree's radii (as widths), so hiding changes nothing else.
     template <class F>
@@ -259,7 +292,28 @@ std::vector<std::pair<int, int>> segmentSteps(int minSegments, int maxSegments) 
     return steps;
 }
 
-// The bark detail closest to `target` triangles: the first segment step at or below it when
+// A number of pruned edges strictly between `lo` and `hi` (hi − lo > 1; triangle counts countLo
+// > target ≥ countHi) to mesh next: where `interpolate`, where the target lies between the two
+// counts on the line through them (the count falls nearly in proportion to the edges pruned
+// where thin twigs go), else halfway (uneven stretches, where the line would creep along).
+std::size_t prunedProbe(std::size_t lo, double countLo, std::size_t hi, double countHi,
+                        double target, bool interpolate) {
+    if (!interpolate || !(countLo > countHi)) return lo + (hi - lo) / 2;
+    const double share = std::clamp((countLo - target) / (countLo - countHi), 0.0, 1.0);
+    const auto offset =
+        static_cast<std::size_t>(std::llround(share * static_cast<double>(hi - lo)));
+    return std::clamp(lo + offset, lo + 1, hi - 1);
+}
+
+// Where each trial of planBark is a mesh (welded bark), a number of pruned edges whose count is
+// this close to the target ends the search: the last probes of a bisection down to neighbouring
+// counts had cost ABOP 1.24a's 40 % level a quarter of a second (717–720 pruned edges, 51 674 to
+// 51 188 welded triangles for 51 229), and a level that is later united misses its target by
+// more than that anyway.
+constexpr double kMeshedPlanTolerance = 0.01;
+
+// The bark detail closest to `target` triangles (within kMeshedPlanTolerance where trials are
+// meshes): the first segment step at or below it when
 // that is within 3 %, else pruning from the step before it (the last step where none is). Each
 // trial meshes the bark (welded bark as slowly as the final mesh), so the searches take few:
 // the step by bisection (fewer segments never give more triangles), the number of pruned edges
@@ -310,13 +364,12 @@ void planBark(const TreeMesher& mesher, double target, Detail& d) {
         d.prune = hi;
         return;
     }
+    const double close = mesher.trialsAreMeshes() ? kMeshedPlanTolerance * target : 0.0;
     for (bool interpolate = true; hi - lo > 1; interpolate = !interpolate) {
-        std::size_t probe = lo + (hi - lo) / 2;
-        if (interpolate) {
-            const double share = (count(lo) - target) / (count(lo) - count(hi));
-            const auto offset =
-                static_cast<std::size_t>(std::llround(share * static_cast<double>(hi - lo)));
-            probe = std::clamp(lo + offset, lo + 1, hi - 1);
+        const std::size_t probe = prunedProbe(lo, count(lo), hi, count(hi), target, interpolate);
+        if (std::abs(count(probe) - target) <= close) {
+            d.prune = probe;
+            return;
         }
         (count(probe) > target ? lo : hi) = probe;
     }
@@ -360,7 +413,9 @@ constexpr int kUnitedRounds = 5;
 // more than kUnitedTolerance, meshed again, up to `rounds` meshes in all: planned for a count
 // scaled by what the last mesh's bark gave against `barkTarget`, or, once meshes
 // above and below are known, interpolated between the closest of them; where those two differ
-// only in the edges pruned, the number pruned is bisected on the meshes themselves. A union's
+// only in the edges pruned, the number pruned is interpolated between their counts, every
+// other time halved (prunedProbe; bisected until session 42: ABOP 1.24a's and 1.24c's coarsest
+// levels took 5 unions, now 3), on the meshes themselves. A union's
 // count grows faster than its input where dense branches stay and jumps where one pruned edge
 // takes a crowded cluster with it: ABOP 1.27's coarsest level 3 136 welded → 3 924 united,
 // 5 336 → 12 712, and 249 pruned edges gave 7 794 united triangles, 295 gave 5 892, for
@@ -378,6 +433,7 @@ Mesh meshLevel(const TreeMesher& mesher, double target, double barkTarget, doubl
     };
     std::optional<Meshed> under, over;  // the closest below and above the target
     int bracketed = 0;                  // rounds that had both
+    int prunedRounds = 0;               // rounds between two meshes that differ in pruning alone
     for (int round = 0; round < rounds; ++round) {
         Detail trial = leavesPlanned;
         const bool prunesApart = under && over &&
@@ -386,7 +442,8 @@ Mesh meshLevel(const TreeMesher& mesher, double target, double barkTarget, doubl
                                  over->detail.prune + 1 < under->detail.prune;
         if (prunesApart) {
             trial = over->detail;
-            trial.prune = over->detail.prune + (under->detail.prune - over->detail.prune) / 2;
+            trial.prune = prunedProbe(over->detail.prune, over->bark, under->detail.prune,
+                                      under->bark, barkTarget, ++prunedRounds % 2 == 1);
         } else {
             trial.solidUnion = false;
             planBark(mesher, plan, trial);
@@ -426,6 +483,17 @@ Mesh meshLevel(const TreeMesher& mesher, double target, double barkTarget, doubl
     return kept;
 }
 
+// Level i, meshed at detail d: its mesh named and its detail recorded.
+TreeLod namedLevel(TreeLod lod, std::size_t i, const Detail& d) {
+    lod.mesh.name = "tree_LOD" + std::to_string(i);
+    lod.minSegments = d.minSegments;
+    lod.maxSegments = d.maxSegments;
+    lod.prunedNodes = d.prune;
+    lod.leafKeep = d.keep;
+    lod.leafCards = d.cards;
+    return lod;
+}
+
 }  // namespace
 
 std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
@@ -457,33 +525,51 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
     double barkFull = bark0;  // at full detail, united where the levels are
     const bool united = params.weldJunctions && params.solidUnion;
     full.solidUnion = params.solidUnion;  // of the levels' meshes; planned on welded bark
-    if (united) {
-        Detail d = full;
-        d.solidUnion = true;
-        d.reported = true;
-        unitedFull = mesher.both(d, &unitedFullReport);
-        barkFull = static_cast<double>(triangles(unitedFull)) - leaves0;
-    }
-    const double total0 = barkFull + leaves0;
 
     // The levels are planned and meshed on threads of their own (each plans by meshing trial
     // details, the finer ones are united), and reported in their order.
     mesher.preparePruning();
     const std::size_t levelThreads = std::min(ratios.size(), mesher.threads());
     mesher.shareCores(levelThreads);
+    // The full detail is united on a thread of its own while the levels plan their bark on the
+    // welded counts (a level without leaves plans the same welded count either way; the trial
+    // meshes are kept, TreeMesher::barkTriangles), so the plans made once the united count is
+    // known find their trials meshed (ABOP 1.24a: its union took 0.8 s before any level began).
+    // The last reference to a std::async future waits for its task, so unitedFull outlives it.
+    // On one thread (TreeMeshParams::threads = 1, as `ramus batch` meshes its items) the union
+    // is made where the first level waits for it.
+    std::shared_future<void> unitedReady;
+    const bool unitedAside = united && mesher.threads() > 1;
+    if (united) {
+        const auto policy = unitedAside ? std::launch::async : std::launch::deferred;
+        unitedReady = std::async(policy, [&] {
+                          Detail d = full;
+                          d.solidUnion = true;
+                          d.reported = true;
+                          unitedFull = mesher.both(d, &unitedFullReport);
+                          barkFull = static_cast<double>(triangles(unitedFull)) - leaves0;
+                      }).share();
+    }
     std::vector<TreeLod> lods(ratios.size());
     std::vector<TreeMeshReport> reports(ratios.size());
     detail::forEachOnThreads(
         ratios.size(), levelThreads,
         [&](std::size_t i) {
-            const double target = std::round(ratios[i] * total0);
             Detail d = full;
             TreeLod lod;
             lod.ratio = ratios[i];
+            if (united && ratios[i] == 1.0) return;  // the full detail itself, below
+            if (ratios[i] < 1.0) planLeaves(ratios[i] * leaves0, leaves0, cards0, true, d);
+            const double leafShare = d.keep * (d.cards ? cards0 : leaves0);
+            if (unitedAside) {  // its trial meshes, while the full detail is united
+                Detail early = d;
+                early.solidUnion = false;
+                planBark(mesher, std::max(0.0, ratios[i] * (bark0 + leaves0) - leafShare), early);
+            }
+            if (united) unitedReady.get();
+            const double target = std::round(ratios[i] * (barkFull + leaves0));
             lod.targetTriangles = static_cast<std::size_t>(target);
             if (ratios[i] < 1.0) {
-                planLeaves(ratios[i] * leaves0, leaves0, cards0, true, d);
-                const double leafShare = d.keep * (d.cards ? cards0 : leaves0);
                 double barkTarget = target - leafShare;
                 if (barkTarget > barkFull) {  // the bark cannot take the rest: the leaves must
                     barkTarget = barkFull;
@@ -491,22 +577,25 @@ std::vector<TreeLod> buildTreeLods(std::span<const TreeMeshInput> trees,
                 }
                 lod.mesh = meshLevel(mesher, target, barkTarget, barkTarget * bark0 / barkFull,
                                      united ? kUnitedRounds : 1, d, reports[i]);
-            } else if (united) {
-                lod.mesh = unitedFull;
-                reports[i] = unitedFullReport;
             } else {
                 d.reported = true;
                 lod.mesh = mesher.both(d, &reports[i]);
             }
-            lod.mesh.name = "tree_LOD" + std::to_string(i);
-            lod.minSegments = d.minSegments;
-            lod.maxSegments = d.maxSegments;
-            lod.prunedNodes = d.prune;
-            lod.leafKeep = d.keep;
-            lod.leafCards = d.cards;
-            lods[i] = std::move(lod);
+            lods[i] = namedLevel(std::move(lod), i, d);
         },
         1);
+    if (united) {
+        unitedReady.get();
+        for (std::size_t i = 0; i < ratios.size(); ++i) {
+            if (ratios[i] != 1.0) continue;
+            TreeLod lod;
+            lod.ratio = 1.0;
+            lod.targetTriangles = triangles(unitedFull);
+            lod.mesh = unitedFull;
+            reports[i] = unitedFullReport;
+            lods[i] = namedLevel(std::move(lod), i, full);
+        }
+    }
     if (report != nullptr) {
         for (const TreeMeshReport& r : reports) addReport(*report, r);
     }

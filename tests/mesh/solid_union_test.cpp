@@ -599,6 +599,17 @@ TEST(SolidUnion, TreeAssetLevelsAreEachUnited) {
     EXPECT_EQ(single.unionsApplied, 1u);
     EXPECT_EQ(mesh.indices, lods[0].mesh.indices);  // deterministic
     EXPECT_EQ(mesh.positions, lods[0].mesh.positions);
+    // On one thread the full detail is united where the first level waits for it instead of
+    // beside the levels' planning: the same levels.
+    TreeMeshParams oneThread = asset.params;
+    oneThread.threads = 1;
+    const std::vector<TreeLod> sequential =
+        buildTreeLods({&asset.input, 1}, oneThread, asset.ratios);
+    ASSERT_EQ(sequential.size(), lods.size());
+    for (std::size_t i = 0; i < lods.size(); ++i) {
+        EXPECT_EQ(sequential[i].mesh.indices, lods[i].mesh.indices) << i;
+        EXPECT_EQ(sequential[i].mesh.positions, lods[i].mesh.positions) << i;
+    }
 }
 
 }  // namespace
