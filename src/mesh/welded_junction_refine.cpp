@@ -1012,8 +1012,14 @@ bool JunctionMesher::refineJunction(std::size_t firstIndex, bool judgeWebs) {
     // between them (a crotch of several merged branch nodes), the rays from the webs over it
     // met no branch before it and their vertices stayed on the hull (hedge_1: 429 of 833 new
     // vertices, the junction 4.3 twig radii beside the tubes in the silhouette); there the
-    // axis point nearest the mean that lies well inside the hull is the centre.
-    const bool centreInside = shape_.distance(centre) <= kSurfaceOffset * shape_.thinnest;
+    // axis point nearest the mean that lies well inside the hull is the centre. Inside the
+    // branches themselves, not only inside the surface the vertices move to (5 % of the thinnest
+    // radius beyond them, kSurfaceOffset), as until session 43: from a mean in that thin shell
+    // the rays towards the near side met the surface at once, and their vertices crowded into a
+    // pinch (a random plant: 198 positions within 0.002 of one point, 5 % of a twig's radius,
+    // whose union cut them into 90 k pieces meeting there and ran for minutes; five junctions of
+    // the shipped examples took their centres there too).
+    const bool centreInside = shape_.distance(centre) <= 0.0;
     Vec3 rayCentre = centre;
     double nearest = std::numeric_limits<double>::infinity();
     for (const JunctionShape::Capsule& capsule : shape_.capsules) {

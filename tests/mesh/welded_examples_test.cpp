@@ -5,14 +5,19 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "ramus/colonize.hpp"
+#include "ramus/lsystem.hpp"
+#include "ramus/turtle.hpp"
 #include "ramus/welded_mesher.hpp"
 #include "welded_checks.hpp"
 
@@ -241,6 +246,44 @@ TEST(WeldedExamples, EveryColonizationExampleIsClosedGenusZeroSurfaces) {
         // conifer: one limb near the base between two full junctions (16 branch nodes).
         EXPECT_LE(report.crossings, 1u);
     });
+}
+
+// The most distinct vertex positions of `mesh` in one cube of side `cell`.
+std::size_t crowdedPositions(const Mesh& mesh, double cell) {
+    std::set<std::array<float, 3>> positions;
+    for (const Vec3f& p : mesh.positions) positions.insert({p.x(), p.y(), p.z()});
+    std::map<std::array<std::int64_t, 3>, std::size_t> cells;
+    std::size_t most = 0;
+    for (const auto& p : positions) {
+        std::array<std::int64_t, 3> key{};
+        for (int d = 0; d < 3; ++d) key[d] = static_cast<std::int64_t>(std::floor(p[d] / cell));
+        most = std::max(most, ++cells[key]);
+    }
+    return most;
+}
+
+// Two random plants (random-L-system runs of session 43) whose shrunk junctions took the mean
+// of their hull's corners as the centre of their rays where it lay in the thin shell between the
+// branches and the surface the vertices move to: the rays towards the near side met that
+// surface at once and 116 and 77 positions crowded into a cube of 0.002 (5 % of a twig's radius),
+// which the union cut into tens of thousands of pieces meeting there (minutes instead of half a
+// second). A centre must lie inside the branches themselves (welded_junction_refine.cpp): 7 and
+// 12 now; ABOP 1.24a has 3, tree_3d 1.
+TEST(WeldedExamples, ShrunkJunctionsDoNotPinchTheirVerticesTogether) {
+    for (const char* text : {"derivations: 4\nangle: 20\naxiom: F[+X]F[-X]\n"
+                             "X -> FFFFFXF\nF -> F[+F]F\n",
+                             "derivations: 4\nangle: 15\naxiom: FX\n"
+                             "X -> F[[F+FFX\\][^|XXF&]FfFX[X^]]F\nF -> F\n"}) {
+        SCOPED_TRACE(text);
+        const LSystem system = parseLSystem(text);
+        const BranchTree tree = interpretTurtle(deriveLSystem(system), system.symbols,
+                                                turtleParamsFrom(system.settings))
+                                    .tree;
+        WeldReport report;
+        const Mesh mesh = buildWeldedTreeMesh(tree, {}, &report);
+        EXPECT_GT(report.refinedJunctions, 40u);
+        EXPECT_LE(crowdedPositions(mesh, 0.002), 16u);
+    }
 }
 
 TEST(WeldedExamples, SmallExamplesHaveNoSelfIntersections) {
