@@ -88,6 +88,11 @@ private:
         faces_[g].constrained[j] = true;
     }
 
+    // Calls visit(g, k) for the faces g around point a (a = faces_[g].v[k]), turning both ways
+    // from faceAt_[a], until it returns true; returns whether it did.
+    template <class Visit>
+    bool aroundPoint(std::uint32_t a, Visit visit) const;
+
     template <class Predicates>
     void insertPoint(const Predicates& predicates, std::uint32_t p);
     template <class Predicates>
@@ -101,6 +106,9 @@ private:
 
     std::vector<Face> faces_;
     std::uint32_t last_ = 0;  // the face last made: where the next point's walk starts
+    // Per point, once the points are in: a face at it (kept as constraints remake faces), where
+    // insertConstraint starts its turn around the point.
+    std::vector<std::uint32_t> faceAt_;
     // Edges to check for Lawson's flips: (face, edge index).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> toCheck_;
     // Scratch of a constraint's cavity: the faces it crossed, their corners on the left and on the
@@ -126,7 +134,30 @@ void ConstrainedTriangulation::triangulate(
         {false, false, false}});
     last_ = 0;
     for (std::uint32_t p = 3; p < count; ++p) insertPoint(predicates, p);
+    faceAt_.assign(count, kNoFace);
+    for (std::uint32_t f = 0; f < faces_.size(); ++f) {
+        for (const std::uint32_t v : faces_[f].v) faceAt_[v] = f;
+    }
     for (const auto& [a, b] : constraints) insertConstraint(predicates, a, b);
+}
+
+template <class Visit>
+bool ConstrainedTriangulation::aroundPoint(std::uint32_t a, Visit visit) const {
+    const std::uint32_t start = faceAt_[a];
+    if (start == kNoFace) return false;
+    for (int way = 0; way < 2; ++way) {
+        std::uint32_t g = start;
+        do {
+            const Face& face = faces_[g];
+            std::uint32_t k = 0;
+            while (k < 3 && face.v[k] != a) ++k;
+            if (k == 3) return false;
+            if ((way == 0 || g != start) && visit(g, k)) return true;
+            g = face.neighbor[way == 0 ? prev(k) : next(k)];
+        } while (g != kNoFace && g != start);
+        if (g == start) break;  // all the way round: no need to turn back
+    }
+    return false;
 }
 
 // Every point comes before the constraints (triangulate): no edge is constrained yet.
@@ -247,32 +278,45 @@ template <class Predicates>
 void ConstrainedTriangulation::insertConstraint(const Predicates& predicates, std::uint32_t a,
                                                 std::uint32_t b) {
     while (a != b) {
-        // The face at a whose angle holds the direction to b.
+        // The face at a whose angle holds the direction to b: found by turning around a (that
+        // face is the only one, so any search finds the same; until session 43 every face was
+        // scanned for each, quadratic in a triangle's pieces: a random plant's union ran for
+        // minutes in here), or by a scan should the turn miss it.
         std::uint32_t f = kNoFace, k = 0;
-        for (std::uint32_t g = 0; g < faces_.size() && f == kNoFace; ++g) {
+        bool through = false;  // the segment passes through a point on the way to b: a moved on
+        bool ends = false;     // an edge of the face is a–b
+        auto holds = [&](std::uint32_t g, std::uint32_t at) {
             const Face& face = faces_[g];
-            for (k = 0; k < 3 && face.v[k] != a; ++k) {
-            }
-            if (k == 3) continue;
-            const std::uint32_t u = face.v[next(k)], w = face.v[prev(k)];
+            const std::uint32_t u = face.v[next(at)], w = face.v[prev(at)];
             if (u == b || w == b) {
-                setConstrained(g, u == b ? prev(k) : next(k));
-                return;
+                setConstrained(g, u == b ? prev(at) : next(at));
+                ends = true;
+                return true;
             }
             const int su = predicates.orientation(a, u, b);
             const int sw = predicates.orientation(a, w, b);
-            if (su < 0 || sw > 0) continue;
+            if (su < 0 || sw > 0) return false;
             if (su == 0 || sw == 0) {  // through u or w on the way to b
-                setConstrained(g, su == 0 ? prev(k) : next(k));
+                setConstrained(g, su == 0 ? prev(at) : next(at));
                 a = su == 0 ? u : w;
-                f = g;
-                k = 3;
-                break;
+                through = true;
+                return true;
             }
             f = g;
+            k = at;
+            return true;
+        };
+        if (!aroundPoint(a, holds)) {
+            bool found = false;
+            for (std::uint32_t g = 0; g < faces_.size() && !found; ++g) {
+                std::uint32_t at = 0;
+                while (at < 3 && faces_[g].v[at] != a) ++at;
+                found = at < 3 && holds(g, at);
+            }
+            if (!found) throw TriangulationFailure{"a constraint that leaves the triangle"};
         }
-        if (f == kNoFace) throw TriangulationFailure{"a constraint that leaves the triangle"};
-        if (k == 3) continue;
+        if (ends) return;
+        if (through) continue;
         // Walk across the faces the segment a–b crosses, up to b or a point on it.
         crossed_.assign(1, f);
         left_.clear();
@@ -346,6 +390,7 @@ void ConstrainedTriangulation::triangulatePseudoPolygon(const Predicates& predic
     if (made_.size() == crossed_.size()) throw TriangulationFailure{"a cavity that does not close"};
     made_.push_back(crossed_[made_.size()]);
     faces_[made_.back()].v = {a, b, chain[c]};
+    faceAt_[a] = faceAt_[b] = faceAt_[chain[c]] = made_.back();
     triangulatePseudoPolygon(predicates, a, chain[c], chain.first(c));
     triangulatePseudoPolygon(predicates, chain[c], b, chain.subspan(c + 1));
 }
