@@ -105,8 +105,8 @@ union-check: build
 	  --gtest_filter='SolidUnion.EveryExampleIsOneCleanSurface:SolidUnion.ShrunkJunctionsThatDoNotUniteCleanlyUniteAsHulls:SolidUnion.MovesAreTriedInOrderUntilOneIsClean:SolidUnion.MicroEdgeCollapsesMendWhatTheMovesCannot'
 
 # The union on 400 random L-system plants (scripts/random-unions.py: each must end within 60 s as
-# one clean surface; Release build, about 5 minutes). Seed 332 still runs over (docs/welded.md,
-# Performance, "Session 43").
+# one clean surface, or be refused at once by the union's work limit, as seed 332 is; Release
+# build, about a minute; docs/welded.md, Performance, "Session 44").
 random-union-check: build
 	python3 scripts/random-unions.py --ramus $(RAMUS) --from 1 --to 400 --timeout 60
 

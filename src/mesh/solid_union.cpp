@@ -65,6 +65,7 @@
 #include <numeric>
 #include <optional>
 #include <span>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -384,6 +385,35 @@ Intersections intersectingTriangles(const std::vector<Point>& points,
         });
     for (const auto& [s, t] : found.pairs) found.cut[s] = found.cut[t] = 1;
     return found;
+}
+
+// The pairs of intersection segments within one cut triangle, summed over the cut triangles
+// (the pairs (s, t) found intersecting: one segment in s and one in t each): what bounds the
+// refinement's crossing tests and its crossings (kSolidUnionSegmentPairsPerTriangle).
+std::uint64_t segmentPairsWithinTriangles(std::size_t triangles,
+                                          const std::vector<detail::TrianglePair>& pairs) {
+    std::vector<std::uint32_t> segments(triangles, 0);
+    for (const auto& [s, t] : pairs) {
+        ++segments[s];
+        ++segments[t];
+    }
+    std::uint64_t within = 0;
+    for (const std::uint64_t k : segments) within += k * (k - (k > 0)) / 2;
+    return within;
+}
+
+// Whether the intersections of a mesh of `triangles` triangles that make `segmentPairs` pairs of
+// segments within its cut triangles are more than the union cuts; if so, report.failure says so.
+bool overWorkLimit(std::size_t triangles, std::uint64_t segmentPairs, SolidUnionReport& report) {
+    const std::uint64_t limit = kSolidUnionSegmentPairsFloor +
+                                std::uint64_t{kSolidUnionSegmentPairsPerTriangle} * triangles;
+    if (segmentPairs <= limit) return false;
+    report.failure = "the surfaces overlap too densely to cut (" + std::to_string(segmentPairs) +
+                     " pairs of intersections within triangles, " +
+                     std::to_string(segmentPairs / std::max<std::size_t>(triangles, 1)) +
+                     " per triangle; the union takes at most " + std::to_string(limit) +
+                     "): branches run inside one another along their length";
+    return true;
 }
 
 // A separate closed piece of the result with less than this fraction of the largest piece's
@@ -1266,8 +1296,9 @@ Vec3f hashMoved(Vec3f p, std::uint32_t v, double step, std::uint64_t salt) {
     return p;
 }
 
-// postponed: the move made more triangles intersect than allowed (unionAttempt's cutLimit).
-enum class Outcome { done, badInput, retry, postponed };
+// postponed: the move made more triangles intersect than allowed (unionAttempt's cutLimit);
+// overLimit: the cut would be more work than the union takes on (overWorkLimit).
+enum class Outcome { done, badInput, retry, postponed, overLimit };
 
 Outcome failWith(SolidUnionReport& report, const char* why, Outcome outcome) {
     report.failure = why;
@@ -1316,6 +1347,10 @@ Outcome unionAttempt(const Mesh& mesh, const Surfaces& input, SolidUnionReport& 
     RAMUS_ASSERT(intersecting == intersectingFaces(points, fan));
     cut = static_cast<std::size_t>(std::count(intersecting.begin(), intersecting.end(), 1));
     if (cut > cutLimit) return Outcome::postponed;
+    if (overWorkLimit(mesh.triangleCount(),
+                      segmentPairsWithinTriangles(fan.size() / 3, intersections.pairs), report)) {
+        return Outcome::overLimit;
+    }
     if (cut == 0) {
         report.outputComponents = report.inputComponents;  // nothing intersects: keep the input
         report.patches = report.keptPatches = report.outputComponents;
@@ -2124,19 +2159,23 @@ bool unionClosedSurfaces(Mesh& mesh, SolidUnionReport* report, std::size_t maxAt
         }
     };
     const std::size_t moves = std::clamp<std::size_t>(maxAttempts, 1, std::size(kUnionMoves));
+    // A move whose cut would be over the work limit ends the attempts (the best so far stays).
+    bool overLimit = false;
     for (const UnionMove& move : std::span(kUnionMoves, moves)) {
         const std::size_t cutLimit =
             r.attempts == 0 ? std::numeric_limits<std::size_t>::max() : postponedAbove(firstCut);
         const Outcome outcome = attempt(move, cutLimit);
         if (outcome == Outcome::badInput) return false;
+        overLimit = outcome == Outcome::overLimit;
         if (outcome == Outcome::done) reunite(move);
-        if (clean()) break;
+        if (clean() || overLimit) break;
     }
     const std::size_t postponedMoves = postponed.size();
     for (const UnionMove& move : std::vector<UnionMove>(std::move(postponed))) {
-        if (clean()) break;
+        if (clean() || overLimit) break;
         const Outcome outcome = attempt(move, std::numeric_limits<std::size_t>::max());
         if (outcome == Outcome::badInput) return false;
+        overLimit = outcome == Outcome::overLimit;
         if (outcome == Outcome::done) reunite(move);
     }
     if (!best) return false;

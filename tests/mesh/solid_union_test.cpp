@@ -536,6 +536,37 @@ TEST(SolidUnion, OpenInputIsRefusedAndLeftUnchanged) {
     EXPECT_EQ(mesh.positions, before.positions);
 }
 
+// A lattice of n planks along x through n taller planks along y: each plank's faces are cut by
+// the other layer's, about 60 n³ pairs of intersections within triangles (what the union's
+// work limit counts, kSolidUnionSegmentPairsPerTriangle).
+Mesh plankLattice(int n) {
+    Mesh mesh;
+    for (int i = 0; i < n; ++i) {
+        appendBox(mesh, Vec3(-0.5, i, 0), Vec3(n, i + 0.3, 1));
+        appendBox(mesh, Vec3(i + 0.5, -0.5, -0.5), Vec3(i + 0.8, n, 1.5));
+    }
+    return mesh;
+}
+
+// Up to the work limit the union cuts the lattice into one surface; far beyond it (n = 60:
+// 13.3 M pairs on 1 440 triangles, where it takes 4.1 M) it stops before cutting, with a
+// reason, and leaves the mesh as it was (without the limit it would unite it in about 2 s).
+TEST(SolidUnion, OverlapBeyondTheWorkLimitIsRefusedAndLeftUnchanged) {
+    Mesh small = plankLattice(10);
+    SolidUnionReport report;
+    ASSERT_TRUE(unionClosedSurfaces(small, &report)) << report.failure;
+    EXPECT_EQ(report.outputComponents, 1u);
+    EXPECT_EQ(report.defects(), 0u);
+
+    Mesh dense = plankLattice(60);
+    const Mesh before = dense;
+    EXPECT_FALSE(unionClosedSurfaces(dense, &report));
+    EXPECT_NE(report.failure.find("overlap too densely"), std::string::npos) << report.failure;
+    EXPECT_EQ(report.attempts, 1u);  // no other move is tried
+    EXPECT_EQ(dense.indices, before.indices);
+    EXPECT_EQ(dense.positions, before.positions);
+}
+
 // tree_3d_tropism at 4 derivations (15 junction–tube intersections) as a united tree asset in
 // three levels of detail.
 struct UnitedAsset {
