@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer target BUILD_DIR/fuzz_<name> for SECONDS on a temporary copy of its seed
 # corpus fuzz/corpus/<name>, so runs never add files to the repository. Exits 1 when any target
-# crashes, hangs (> 10 s on one input), runs out of memory or trips a sanitizer; the failing
-# inputs are copied to BUILD_DIR/fuzz-artifacts/. Add them to the corpus once fixed. Each
+# crashes, hangs (> 10 s on one input, FUZZ_TIMEOUT), runs out of memory or trips a sanitizer;
+# the failing inputs are copied to BUILD_DIR/fuzz-artifacts/. Add them to the corpus once fixed. Each
 # target's summary line gives what docs/FUZZING.md records: executions, coverage (cov, ft) and
 # the corpus size at the end; the full logs stay in BUILD_DIR/fuzz-logs/.
 #
 # Usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]   (TARGET: e.g. lsystem; default all)
-# FUZZ_JOBS=N runs up to N targets at once (default 1), each for SECONDS.
+# FUZZ_JOBS=N runs up to N targets at once (default 1), each for SECONDS; FUZZ_TIMEOUT=S makes an
+# input slower than S seconds a finding (default 10).
 set -euo pipefail
 
 if [[ $# -lt 2 ]]; then
@@ -67,7 +68,7 @@ fuzz_one() {
     fi
     log="$logs/$name.log"
     echo "fuzz.sh: $name for ${seconds}s (seeds: fuzz/corpus/$corpusName)"
-    if ! "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    if ! "$bin" -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \
         -artifact_prefix="$artifacts/" -print_final_stats=1 "$corpus" >"$log" 2>&1; then
         echo "fuzz.sh: $name FAILED; end of its log:" >&2
         tail -n 60 "$log" >&2

@@ -375,7 +375,8 @@ std::size_t Separator::crossingsNear(std::uint32_t v, std::vector<TrianglePair>*
 bool Separator::atMostCrossingsNear(std::uint32_t v, std::size_t most) {
     std::size_t count = 0;
     const auto [first, end] = star(v);
-    auto crosses = [&](std::uint32_t k, std::uint32_t n, const Box3& box) {
+    // (A copy: clang 14, the fuzz build's, does not let lambdas capture structured bindings.)
+    auto crosses = [&, first = first](std::uint32_t k, std::uint32_t n, const Box3& box) {
         const std::uint32_t g = near_[n];
         return boxNow(g).overlaps(box) && cross(around_[first + k], g);
     };

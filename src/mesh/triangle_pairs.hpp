@@ -125,9 +125,11 @@ bool trianglesIntersect(const PointOf& pointOf, const std::uint32_t* a, const st
         const int ra = unshared(aShares), rb = unshared(bShares);
         const Point& p = at(pa, ra + 1);
         const Point& q = at(pa, ra + 2);
+        // (degenerate() before coplanar_orientation, whose precondition is that p, q and a's
+        // third corner make a triangle: CGAL's assertion aborted there, fuzz_union, session 44.)
         return PlaneSide(p, q, at(pa, ra)).orientation(at(pb, rb)) == CGAL::COPLANAR &&
-               CGAL::coplanar_orientation(p, q, at(pa, ra), at(pb, rb)) == CGAL::POSITIVE &&
-               !degenerate();
+               !degenerate() &&
+               CGAL::coplanar_orientation(p, q, at(pa, ra), at(pb, rb)) == CGAL::POSITIVE;
     }
     // Where the corners of one triangle that it does not share lie strictly on one side of the
     // other's plane, the two do not meet beyond what they share: most neighbouring pairs are

@@ -121,5 +121,24 @@ TEST(StrictlyOnOneSide, NeedsEveryPointOffThePlaneOnTheSameSide) {
     EXPECT_FALSE(detail::strictlyOnOneSide(p, q, r, {&above, &below}));
 }
 
+// Two triangles on one edge, one of them degenerate (its third corner on the edge's line): the
+// union's check on its result (trianglesCross, which skips degenerate triangles) must not ask
+// CGAL for the side of the other across the edge, whose precondition is a triangle (builds
+// with CGAL's assertions aborted there: found by fuzz_union, session 44).
+TEST(TrianglesIntersect, ADegenerateTriangleOnASharedEdgeIsSkippedBeforeCgalsCoplanarTest) {
+    const std::vector<Point> points{{0, 0, 0}, {1, 0, 0},   {2, 0, 0},
+                                    {1, 1, 0}, {1, 0.5, 0}, {1, -1, 0}};
+    auto pointOf = [&](std::uint32_t v) -> const Point& { return points[v]; };
+    const std::uint32_t degenerate[3] = {0, 1, 2};  // on the x axis
+    const std::uint32_t beside[3] = {2, 0, 3};      // on its edge 0–2, in the same plane
+    EXPECT_FALSE(detail::trianglesIntersect(pointOf, degenerate, beside, true));
+    EXPECT_FALSE(detail::trianglesIntersect(pointOf, beside, degenerate, true));
+    // Proper triangles on the edge 0–2 in one plane: folded onto each other where both lie on
+    // one side of it, apart where on either side.
+    const std::uint32_t upper[3] = {0, 2, 3}, folded[3] = {2, 0, 4}, lower[3] = {2, 0, 5};
+    EXPECT_TRUE(detail::trianglesIntersect(pointOf, upper, folded, true));
+    EXPECT_FALSE(detail::trianglesIntersect(pointOf, upper, lower, true));
+}
+
 }  // namespace
 }  // namespace ramus
