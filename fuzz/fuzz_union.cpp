@@ -1,15 +1,15 @@
 // libFuzzer target for the solid union (src/mesh/solid_union.cpp, `--union`) on the welded bark of
 // arbitrary L-systems: the text is parsed as a .lsys file, derived for at most 4 steps under a
-// 20 000-module limit and drawn by the turtle; every tree of at most 100 nodes (the union under ASan takes 0.1–2 s on those) is meshed welded
-// and united (shrunk junctions, or convex ones when the text's length is odd; at most 2 attempts
-// when it is a multiple of 3, to reach the paths that keep the best of few). Only ramus::Error
-// may escape. Where the union was applied its result must be closed like its input (every edge,
-// vertices welded by position, used as often in one direction as in the other), with indices in
-// range, finite positions and unit normals, and its report must add up; where it was not, the
-// report must say why. Anything else (crash, sanitizer report, other exception, internal
-// assertion, a hang past fuzz.sh's 10 s: the union has a work limit, so none may run away) is a
-// bug. Needs a build with CGAL (the fuzz build's second configuration, Makefile fuzz-build-only).
-// Run with scripts/fuzz.sh.
+// 20 000-module limit and drawn by the turtle; every tree of at most 100 nodes (the union under
+// ASan takes 0.1–15 s on those) is meshed welded and united (shrunk junctions, or convex ones
+// when the text's length is odd; at most 2 attempts when it is a multiple of 3, to reach the
+// paths that keep the best of few). Only ramus::Error may escape. Where the union was applied
+// its result must be closed like its input (every edge, vertices welded by position, used as
+// often in one direction as in the other), with indices in range, finite positions and unit
+// normals, and its report must add up; where it was not, the report must say why. Anything else
+// (crash, sanitizer report, other exception, internal assertion, a hang past FUZZ_TIMEOUT: the
+// union has a work limit, so none may run away) is a bug. Needs a build with CGAL (make
+// fuzz-union). Run with scripts/fuzz.sh.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
