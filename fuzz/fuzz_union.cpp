@@ -15,17 +15,16 @@
 // and the sizes on a grid of quarter units), united by unionClosedSurfaces directly: faces in one
 // plane, shared edges and corners, boxes inside boxes, the coincidences the union's first moves
 // must part. The same checks, and a mesh left as it was where the union was not made.
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "../tests/mesh/box_mesh.hpp"
+#include "fuzzed_tree.hpp"
 #include "mesh_checks.hpp"
 #include "ramus/error.hpp"
-#include "ramus/lsystem.hpp"
 #include "ramus/solid_union.hpp"
-#include "ramus/turtle.hpp"
 #include "ramus/welded_mesher.hpp"
 
 namespace {
@@ -75,20 +74,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         uniteBoxes(text.substr(5));
         return 0;
     }
-    ramus::TurtleResult drawn;
-    try {
-        const ramus::LSystem system = ramus::parseLSystem(text, "fuzz.lsys");
-        ramus::DeriveOptions options;
-        options.derivations = std::min(system.settings.derivations, 4);
-        options.maxModules = 20000;
-        options.maxMemoryBytes = std::size_t{8} << 20;
-        const ramus::ModuleString word = ramus::deriveLSystem(system, options);
-        drawn =
-            ramus::interpretTurtle(word, system.symbols, ramus::turtleParamsFrom(system.settings));
-    } catch (const ramus::Error&) {
-        return 0;
-    }
-    if (drawn.tree.size() > 100) return 0;
+    const std::optional<ramus::BranchTree> tree = ramus::fuzz::fuzzedTree(text, 100);
+    if (!tree) return 0;
     ramus::WeldedMeshParams params;
     params.solidUnion = true;
     params.shrinkJunctions = size % 2 == 0;
@@ -96,7 +83,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ramus::WeldReport report;
     ramus::Mesh mesh;
     try {
-        mesh = ramus::buildWeldedTreeMesh(drawn.tree, params, &report);
+        mesh = ramus::buildWeldedTreeMesh(*tree, params, &report);
     } catch (const ramus::Error&) {
         return 0;
     }

@@ -7,41 +7,28 @@
 // (vertices welded by position) used as often in one direction as in the other, as glTF viewers
 // and the solid union need (tubes are open where a branch starts inside its parent's). Anything
 // else (crash, sanitizer report, other exception, hang) is a bug. Run with scripts/fuzz.sh.
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
+#include "fuzzed_tree.hpp"
 #include "mesh_checks.hpp"
 #include "ramus/error.hpp"
-#include "ramus/lsystem.hpp"
 #include "ramus/tube_mesher.hpp"
-#include "ramus/turtle.hpp"
 #include "ramus/welded_mesher.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
-    ramus::TurtleResult drawn;
-    try {
-        const ramus::LSystem system = ramus::parseLSystem(text, "fuzz.lsys");
-        ramus::DeriveOptions options;
-        options.derivations = std::min(system.settings.derivations, 4);
-        options.maxModules = 20000;
-        options.maxMemoryBytes = std::size_t{8} << 20;
-        const ramus::ModuleString word = ramus::deriveLSystem(system, options);
-        drawn =
-            ramus::interpretTurtle(word, system.symbols, ramus::turtleParamsFrom(system.settings));
-    } catch (const ramus::Error&) {
-        return 0;
-    }
-    if (drawn.tree.size() > 2000) return 0;
+    const std::optional<ramus::BranchTree> tree = ramus::fuzz::fuzzedTree(text, 2000);
+    if (!tree) return 0;
     ramus::WeldedMeshParams params;
     params.shrinkJunctions = size % 2 == 0;
     params.tube.windAttributes = size % 3 == 0;
     try {
-        ramus::fuzz::checkMesh(ramus::buildWeldedTreeMesh(drawn.tree, params), true);
+        ramus::fuzz::checkMesh(ramus::buildWeldedTreeMesh(*tree, params), true);
         // Tubes are open where a branch starts inside its parent's tube.
-        ramus::fuzz::checkMesh(ramus::buildTubeMesh(drawn.tree, params.tube), false);
+        ramus::fuzz::checkMesh(ramus::buildTubeMesh(*tree, params.tube), false);
     } catch (const ramus::Error&) {
     }
     return 0;
