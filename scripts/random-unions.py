@@ -3,10 +3,11 @@
 
 Each seed gives one small random plant (2-4 derivations of random successors for X and F, random
 branching angle); the union must end within the time limit and leave one clean surface (no
-crossing pairs, pinched edges or touching points left, no failed union), or be refused at once by
-its work limit (overlap too dense to cut: counted apart, as are plants that draw nothing). Prints one line per
-plant that does not, and a summary; exits 1 if any does not. `make random-union-check` runs
-seeds 1-400 (docs/welded.md, "Session 43"). The plants are written to a temporary folder, or to
+crossing pairs, pinched edges or touching points left, no failed union), or be refused at once
+by its work limit (overlap too dense to cut: counted apart, as are plants that draw nothing).
+Prints one line per plant that does not, and a summary; exits 1 if any does not.
+`make random-union-check` runs seeds 1-400 (docs/welded.md, Performance, "Session 43" and
+"Session 44"). The plants are written to a temporary folder, or to
 --keep DIR to look at them afterwards.
 """
 import argparse
