@@ -217,17 +217,31 @@ void addPairsMet(std::uint32_t i, int level, const std::vector<Box3>& boxes,
     });
 }
 
-// The pairs in tasks of kBoxesPerTask boxes: task(first, end, out) for the boxes first..end-1,
-// out getting its pairs; concatenated in order.
+// Whether the search is to stop (overlappingBoxes' `stop`).
+bool stopped(const std::atomic<bool>* stop) {
+    return stop != nullptr && stop->load(std::memory_order_relaxed);
+}
+
+// Boxes looked at between two looks at `stop`.
+constexpr std::size_t kBoxesBetweenStops = 64;
+
+// The pairs in tasks of kBoxesPerTask boxes: task(first, end, out) for the boxes first..end-1
+// (kBoxesBetweenStops at a time), out getting its pairs, until `stop` is set; concatenated in
+// order.
 template <class Task>
-std::vector<BoxPair> pairsByBoxes(std::size_t n, Task task,
+std::vector<BoxPair> pairsByBoxes(std::size_t n, Task task, const std::atomic<bool>* stop,
                                   std::vector<std::vector<BoxPair>> found = {}) {
     const std::size_t tasks = (n + kBoxesPerTask - 1) / kBoxesPerTask;
     const std::size_t before = found.size();
     found.resize(before + tasks);
     forEachCoarseOnCores(tasks, [&](std::size_t t) {
-        task(static_cast<std::uint32_t>(t * kBoxesPerTask),
-             static_cast<std::uint32_t>(std::min(n, (t + 1) * kBoxesPerTask)), found[before + t]);
+        const std::size_t end = std::min(n, (t + 1) * kBoxesPerTask);
+        for (std::size_t first = t * kBoxesPerTask; first < end && !stopped(stop);
+             first += kBoxesBetweenStops) {
+            task(static_cast<std::uint32_t>(first),
+                 static_cast<std::uint32_t>(std::min(end, first + kBoxesBetweenStops)),
+                 found[before + t]);
+        }
     });
     std::size_t total = 0;
     for (const auto& f : found) total += f.size();
@@ -240,18 +254,19 @@ std::vector<BoxPair> pairsByBoxes(std::size_t n, Task task,
 // Every pair of overlapping boxes: the pairs within each cell of each level, then each box
 // with the boxes of the levels above its own in the cells of theirs it meets.
 std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHierarchy& levels,
-                                    const PairFilter& keep) {
+                                    const PairFilter& keep, const std::atomic<bool>* stop) {
     const CellTable table(boxes, levels, [](std::uint32_t) { return true; });
     const std::size_t bucketTasks = (table.buckets() + kBucketsPerTask - 1) / kBucketsPerTask;
     std::vector<std::vector<BoxPair>> found(bucketTasks);
     forEachCoarseOnCores(bucketTasks, [&](std::size_t task) {
+        if (stopped(stop)) return;
         std::vector<Box3> local;  // the boxes of one cell, side by side
         const std::size_t end = std::min(table.buckets(), (task + 1) * kBucketsPerTask);
-        for (std::size_t b = task * kBucketsPerTask; b < end; ++b) {
-            const auto [begin, stop] = table.bucket(b);
-            for (const Entry* s = begin; s != stop;) {  // a bucket may hold several cells
+        for (std::size_t b = task * kBucketsPerTask; b < end && !stopped(stop); ++b) {
+            const auto [begin, bucketEnd] = table.bucket(b);
+            for (const Entry* s = begin; s != bucketEnd;) {  // a bucket may hold several cells
                 const Entry* e = s + 1;
-                while (e != stop && e->key == s->key) ++e;
+                while (e != bucketEnd && e->key == s->key) ++e;
                 local.clear();
                 for (const Entry* a = s; a != e; ++a) local.push_back(boxes[a->box]);
                 for (std::size_t a = 0; a < local.size(); ++a) {
@@ -279,7 +294,7 @@ std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHie
                 }
             }
         },
-        std::move(found));
+        stop, std::move(found));
 }
 
 // The pairs of overlapping boxes with a suspect among them, by looking up: every box looks up
@@ -288,7 +303,8 @@ std::vector<BoxPair> allOverlapping(const std::vector<Box3>& boxes, const BoxHie
 // crossing search after moving a few corners) no table of all boxes is built.
 std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
                                          const std::vector<char>& suspect,
-                                         const BoxHierarchy& levels, const PairFilter& keep) {
+                                         const BoxHierarchy& levels, const PairFilter& keep,
+                                         const std::atomic<bool>* stop) {
     int lowest = kLevels;  // the lowest level of a suspect
     for (std::uint32_t i = 0; i < boxes.size(); ++i) {
         if (suspect[i] && levels.level(i) >= 0) lowest = std::min(lowest, levels.level(i));
@@ -298,7 +314,8 @@ std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
         return suspect[i] == 0 && levels.level(i) > lowest;
     });
     return pairsByBoxes(
-        boxes.size(), [&](std::uint32_t first, std::uint32_t end, std::vector<BoxPair>& out) {
+        boxes.size(),
+        [&](std::uint32_t first, std::uint32_t end, std::vector<BoxPair>& out) {
             for (std::uint32_t i = first; i < end; ++i) {
                 const int own = levels.level(i);
                 if (own < 0) continue;
@@ -315,7 +332,8 @@ std::vector<BoxPair> overlappingSuspects(const std::vector<Box3>& boxes,
                     }
                 }
             }
-        });
+        },
+        stop);
 }
 
 // With more than one suspect in this many boxes (the crossing count after a union: ABOP 1.24a
@@ -333,7 +351,7 @@ constexpr std::size_t kFewSuspects = 32;
 // box looks up a tree of the suspects' boxes.
 std::vector<BoxPair> overlappingFewSuspects(const std::vector<Box3>& boxes,
                                             const std::vector<char>& suspect,
-                                            const PairFilter& keep) {
+                                            const PairFilter& keep, const std::atomic<bool>* stop) {
     std::vector<std::uint32_t> suspects;
     std::vector<Box3> suspectBoxes;
     for (std::uint32_t i = 0; i < boxes.size(); ++i) {
@@ -343,7 +361,8 @@ std::vector<BoxPair> overlappingFewSuspects(const std::vector<Box3>& boxes,
     }
     const BoxTree tree(suspectBoxes);
     return pairsByBoxes(
-        boxes.size(), [&](std::uint32_t first, std::uint32_t end, std::vector<BoxPair>& out) {
+        boxes.size(),
+        [&](std::uint32_t first, std::uint32_t end, std::vector<BoxPair>& out) {
             for (std::uint32_t i = first; i < end; ++i) {
                 if (boxes[i].empty() || !finiteBox(boxes[i])) continue;
                 tree.forEachOverlapping(boxes[i], [&](std::uint32_t k) {
@@ -355,29 +374,34 @@ std::vector<BoxPair> overlappingFewSuspects(const std::vector<Box3>& boxes,
                     }
                 });
             }
-        });
+        },
+        stop);
 }
 
 }  // namespace
 
 std::vector<BoxPair> overlappingBoxes(const std::vector<Box3>& boxes,
-                                      const std::vector<char>& suspect, const PairFilter& keep) {
+                                      const std::vector<char>& suspect, const PairFilter& keep,
+                                      const std::atomic<bool>* stop) {
     const PairFilter all = [](std::uint32_t, std::uint32_t) { return true; };
     const PairFilter& filter = keep ? keep : all;
     const auto suspects = static_cast<std::size_t>(
         std::count_if(suspect.begin(), suspect.end(), [](char s) { return s != 0; }));
     if (!suspect.empty() && suspects * kFewSuspects <= boxes.size()) {
-        return overlappingFewSuspects(boxes, suspect, filter);
+        return overlappingFewSuspects(boxes, suspect, filter, stop);
     }
     const BoxHierarchy levels(boxes);
     if (!levels.valid()) return {};
-    if (suspect.empty()) return allOverlapping(boxes, levels, filter);
+    if (suspect.empty()) return allOverlapping(boxes, levels, filter, stop);
     if (suspects * kManySuspects > boxes.size()) {
-        return allOverlapping(boxes, levels, [&](std::uint32_t i, std::uint32_t j) {
-            return (suspect[i] || suspect[j]) && filter(i, j);
-        });
+        return allOverlapping(
+            boxes, levels,
+            [&](std::uint32_t i, std::uint32_t j) {
+                return (suspect[i] || suspect[j]) && filter(i, j);
+            },
+            stop);
     }
-    return overlappingSuspects(boxes, suspect, levels, filter);
+    return overlappingSuspects(boxes, suspect, levels, filter, stop);
 }
 
 }  // namespace ramus::detail

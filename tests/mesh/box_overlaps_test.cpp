@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -127,6 +128,49 @@ TEST(BoxOverlaps, AFilterKeepsOnlyThePairsItWants) {
         }
         EXPECT_GT(expected.size(), 10u);
         EXPECT_EQ(sorted(detail::overlappingBoxes(boxes, which, odd)), expected);
+    }
+}
+
+// Once `stop` is set the search looks at no more boxes (a bucket of the grid's cells or 64 boxes
+// on each thread, at most, after it is set) and returns the pairs found so far: the solid
+// union's work limit sets it from its filter. Each kind of search: all pairs, few suspects (a
+// tree of them), some and many suspects (the grids).
+TEST(BoxOverlaps, AStopEndsTheSearch) {
+    const std::vector<Box3> boxes = mixedBoxes(13);
+    for (const std::size_t every : {0, 100, 5, 1}) {
+        std::vector<char> suspect;
+        if (every > 0) {
+            suspect.assign(boxes.size(), 0);
+            for (std::size_t i = 0; i < boxes.size(); i += every) suspect[i] = 1;
+        }
+        const std::vector<BoxPair> expected = allPairsOverlapping(boxes, suspect);
+        ASSERT_GT(expected.size(), 200u) << every;
+
+        std::atomic<bool> stop{true};  // set before: nothing is looked at
+        std::atomic<std::size_t> calls{0};
+        const detail::PairFilter count = [&](std::uint32_t, std::uint32_t) {
+            ++calls;
+            return true;
+        };
+        EXPECT_TRUE(detail::overlappingBoxes(boxes, suspect, count, &stop).empty()) << every;
+        EXPECT_EQ(calls.load(), 0u) << every;
+
+        stop = false;  // set by the filter at its tenth pair
+        const detail::PairFilter tenth = [&](std::uint32_t, std::uint32_t) {
+            if (++calls >= 10) stop = true;
+            return true;
+        };
+        calls = 0;
+        const std::vector<BoxPair> found =
+            sorted(detail::overlappingBoxes(boxes, suspect, tenth, &stop));
+        EXPECT_GE(found.size(), 10u) << every;
+        EXPECT_LT(found.size(), expected.size() / 2) << every;
+        EXPECT_TRUE(std::includes(expected.begin(), expected.end(), found.begin(), found.end()))
+            << every;
+
+        stop = false;  // never set: every pair
+        EXPECT_EQ(sorted(detail::overlappingBoxes(boxes, suspect, count, &stop)), expected)
+            << every;
     }
 }
 
