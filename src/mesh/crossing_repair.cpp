@@ -42,7 +42,7 @@ constexpr double kReach = 1.01;
 
 class Separator {
 public:
-    Separator(CrossingSurface& surface, double maxMove);
+    Separator(CrossingSurface& surface, double maxMove, std::uint64_t workLimit);
     CrossingRepair run(std::span<const TrianglePair> crossing);
     CrossingRepair unpinchAll(std::span<const std::uint32_t> vertices);
 
@@ -101,13 +101,23 @@ private:
 #endif
     std::vector<Vec3> normals_;     // scratch: normals of a vertex's triangles before a move
     std::vector<Vec3> directions_;  // scratch: the directions of a vertex's moves
+    // Pairs of a vertex's triangle and a triangle near it looked at so far (kept apart by their
+    // boxes or tested), and how many the repair may look at before it stops moving vertices.
+    mutable std::uint64_t work_ = 0;
+    std::uint64_t workLimit_;
+    bool overWorkLimit(CrossingRepair& repair) const {
+        repair.work = work_;
+        repair.overWorkLimit = work_ > workLimit_;
+        return repair.overWorkLimit;
+    }
 };
 
-Separator::Separator(CrossingSurface& surface, double maxMove)
+Separator::Separator(CrossingSurface& surface, double maxMove, std::uint64_t workLimit)
     : s_(surface),
       maxMove_(maxMove),
       moved_(surface.points.size(), 0),
-      covered_(surface.points.size(), 0) {}
+      covered_(surface.points.size(), 0),
+      workLimit_(workLimit) {}
 
 Vec3f Separator::originalOf(std::uint32_t v) const {
     return moved_[v] ? original_.at(v) : s_.points[v];
@@ -343,6 +353,7 @@ void Separator::collectNear(std::uint32_t v) {
 #endif
     }
     nearFirst_.push_back(static_cast<std::uint32_t>(near_.size()));
+    work_ += near_.size();
     lastCrossing_ = {kNoPair, kNoPair};
 }
 
@@ -354,6 +365,7 @@ void Separator::collectNear(std::uint32_t v) {
 std::size_t Separator::crossingsNear(std::uint32_t v, std::vector<TrianglePair>* pairs) const {
     std::size_t count = 0;
     const auto [first, end] = star(v);
+    work_ += near_.size();
     for (std::uint32_t i = first; i < end; ++i) {
         const std::uint32_t f = around_[i];
         const Box3 box = boxNow(f);
@@ -388,6 +400,7 @@ bool Separator::atMostCrossingsNear(std::uint32_t v, std::size_t most) {
     for (std::uint32_t k = 0; k + first < end; ++k) {
         const Box3 box = boxNow(around_[first + k]);
         for (std::uint32_t n = nearFirst_[k]; n < nearFirst_[k + 1]; ++n) {
+            ++work_;
             if ((k == lastK && n == lastN) || !crosses(k, n, box)) continue;
             lastCrossing_ = {k, n};
             if (++count > most) return false;
@@ -502,11 +515,13 @@ CrossingRepair Separator::unpinchAll(std::span<const std::uint32_t> vertices) {
     cover(vertices);
     CrossingRepair repair;
     for (std::uint32_t v : vertices) {
+        if (overWorkLimit(repair)) break;
         std::uint32_t& shared = sharing.at(bitsOf(originalOf(v)));
         if (shared < 2 || s_.points[v] != originalOf(v) || !movable(v) || !unpinch(v)) continue;
         --shared;
         ++repair.movedVertices;
     }
+    overWorkLimit(repair);
     return repair;
 }
 
@@ -532,6 +547,7 @@ CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
                 const std::uint32_t mine = side == 0 ? f : g;
                 const std::uint32_t partner = side == 0 ? g : f;
                 for (std::uint32_t v : s_.triangles[mine]) {
+                    if (overWorkLimit(repair)) break;
                     if (!movable(v) || !separate(v, partner)) continue;
                     ++repair.movedVertices;
                     crossingsAround(v, &made);
@@ -539,12 +555,13 @@ CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
                 }
             }
         }
-        if (made.empty()) break;
+        if (made.empty() || overWorkLimit(repair)) break;
         pending.insert(pending.end(), made.begin(), made.end());
         std::sort(pending.begin(), pending.end());
         pending.erase(std::unique(pending.begin(), pending.end()), pending.end());
         std::erase_if(pending, [&](const TrianglePair& p) { return !cross(p.first, p.second); });
     }
+    overWorkLimit(repair);
     repair.pairsLeft = static_cast<std::size_t>(
         std::count_if(pending.begin(), pending.end(),
                       [&](const TrianglePair& p) { return cross(p.first, p.second); }));
@@ -553,16 +570,24 @@ CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
 
 }  // namespace
 
+std::uint64_t crossingRepairWorkLimit(std::size_t triangles) {
+    return kCrossingRepairWorkFloor + std::uint64_t{kCrossingRepairWorkPerTriangle} * triangles;
+}
+
 CrossingRepair separateCrossings(CrossingSurface& surface, std::span<const TrianglePair> crossing,
-                                 double maxMove) {
+                                 double maxMove, std::optional<std::uint64_t> workLimit) {
     if (crossing.empty()) return {};
-    return Separator(surface, maxMove).run(crossing);
+    return Separator(surface, maxMove,
+                     workLimit.value_or(crossingRepairWorkLimit(surface.triangles.size())))
+        .run(crossing);
 }
 
 CrossingRepair unpinchVertices(CrossingSurface& surface, std::span<const std::uint32_t> vertices,
-                               double maxMove) {
+                               double maxMove, std::optional<std::uint64_t> workLimit) {
     if (vertices.empty()) return {};
-    return Separator(surface, maxMove).unpinchAll(vertices);
+    return Separator(surface, maxMove,
+                     workLimit.value_or(crossingRepairWorkLimit(surface.triangles.size())))
+        .unpinchAll(vertices);
 }
 
 }  // namespace ramus::detail

@@ -254,5 +254,79 @@ TEST(CrossingRepair, PinchedEdgesPartByTheOtherSheetWhereTheFirstCannotMove) {
     expectPartedInto(start, s, {3, 7}, Vec3f(-1, -1, 0));
 }
 
+// `planks` thin planks (2 × 0.2 × 0.02, 12 triangles each) turned about z by 180° / planks
+// from one another, all through the origin: every plank crosses every other, and a corner near
+// the middle has most of the surface within reach. The crossings are real, so no move separates
+// them and the repair would try every move of every corner of every pair.
+detail::CrossingSurface starOfPlanks(int planks) {
+    detail::CrossingSurface s;
+    const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int p = 0; p < planks; ++p) {
+        const double angle = 3.14159265358979 * p / planks;
+        const double c = std::cos(angle), sn = std::sin(angle);
+        const auto base = static_cast<std::uint32_t>(s.points.size());
+        for (int i = 0; i < 8; ++i) {
+            const double x = i & 1 ? 1.0 : -1.0, y = i & 2 ? 0.1 : -0.1,
+                         z = (i & 4 ? 0.01 : -0.01) + 0.001 * p;
+            s.points.emplace_back(static_cast<float>(c * x - sn * y),
+                                  static_cast<float>(sn * x + c * y), static_cast<float>(z));
+        }
+        for (const auto& q : quads) {
+            s.triangles.push_back({base + q[0], base + q[1], base + q[2]});
+            s.triangles.push_back({base + q[0], base + q[2], base + q[3]});
+        }
+    }
+    return s;
+}
+
+// Every pair of triangles of different planks (the repair works on the ones that cross).
+std::vector<detail::TrianglePair> pairsOfPlanks(const detail::CrossingSurface& s) {
+    std::vector<detail::TrianglePair> pairs;
+    const auto triangles = static_cast<std::uint32_t>(s.triangles.size());
+    for (std::uint32_t f = 0; f < triangles; ++f) {
+        for (std::uint32_t g = f - f % 12 + 12; g < triangles; ++g) pairs.emplace_back(f, g);
+    }
+    return pairs;
+}
+
+// The repair counts the pairs of a moving corner's triangle and a triangle near it that it
+// looks at, and stops moving corners past its work limit (session 45: session 43's pinched
+// junctions had run for minutes); it then leaves the pairs it has not separated and has moved
+// nothing farther than allowed. The same inputs stop at the same point. Below the limit, as on
+// every shipped example, nothing changes.
+TEST(CrossingRepair, StopsMovingCornersPastItsWorkLimit) {
+    EXPECT_EQ(detail::crossingRepairWorkLimit(1000),
+              detail::kCrossingRepairWorkFloor +
+                  1000 * std::uint64_t{detail::kCrossingRepairWorkPerTriangle});
+    const detail::CrossingSurface start = starOfPlanks(24);
+    ASSERT_GT(test::countSelfIntersections(meshOf(start), 100000), 1000u);
+    const std::vector<detail::TrianglePair> pairs = pairsOfPlanks(start);
+    const std::uint64_t limit = 2'000'000;
+    detail::CrossingSurface s = start;
+    const detail::CrossingRepair repair = detail::separateCrossings(s, pairs, kMaxMove, limit);
+    EXPECT_TRUE(repair.overWorkLimit);
+    EXPECT_GT(repair.work, limit);
+    EXPECT_LT(repair.work, 2 * limit);  // it stops within one corner's moves past the limit
+    EXPECT_GT(repair.pairsLeft, 1000u);
+    EXPECT_LE(largestMove(start, s), kMaxMove);
+    detail::CrossingSurface again = start;
+    const detail::CrossingRepair repeated =
+        detail::separateCrossings(again, pairs, kMaxMove, limit);
+    EXPECT_EQ(repeated.work, repair.work);
+    EXPECT_EQ(repeated.movedVertices, repair.movedVertices);
+    EXPECT_EQ(again.points, s.points);
+
+    // A grazing crossing is repaired far below any limit.
+    const float ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
+    detail::CrossingSurface graze = cubeAndTetrahedron(1.0f - 3.0f * ulp);
+    const detail::CrossingRepair small =
+        detail::separateCrossings(graze, cubeTetrahedronPairs(), kMaxMove);
+    EXPECT_FALSE(small.overWorkLimit);
+    EXPECT_EQ(small.pairsLeft, 0u);
+    EXPECT_GT(small.work, 0u);
+    EXPECT_LT(small.work, 10'000u);
+}
+
 }  // namespace
 }  // namespace ramus
