@@ -250,6 +250,20 @@ double startRadius(const BranchTree& tree, const std::vector<double>& radii, dou
     return radii[static_cast<std::size_t>(c)];
 }
 
+// pointDirection, computed.
+Vec3 directionAt(const WeldSkeleton& s, const WeldLimb& limb, std::uint32_t k) {
+    const std::uint32_t p = limb.first + k;
+    const Vec3 in =
+        k > 0 ? Vec3((s.pointPosition[p] - s.pointPosition[p - 1]).normalized()) : Vec3::Zero();
+    const Vec3 out = k + 1 < limb.count
+                         ? Vec3((s.pointPosition[p + 1] - s.pointPosition[p]).normalized())
+                         : Vec3::Zero();
+    const Vec3 sum = in + out;
+    const double length2 = sum.squaredNorm();
+    if (length2 > 1e-12) return sum / std::sqrt(length2);
+    return k > 0 ? in : out;
+}
+
 }  // namespace
 
 WeldSkeleton buildWeldSkeleton(const BranchTree& tree, const TubeMeshParams& params) {
@@ -317,8 +331,12 @@ WeldSkeleton buildWeldSkeleton(const BranchTree& tree, const TubeMeshParams& par
         }
     }
     for (double r : s.pointRadius) s.maxRadius = std::max(s.maxRadius, r);
+    s.pointDirections.resize(s.pointPosition.size());
     for (WeldLimb& limb : s.limbs) {
         limb.segments = segmentsFor(params, s.pointRadius[limb.first], s.maxRadius);
+        for (std::uint32_t k = 0; k < limb.count; ++k) {
+            s.pointDirections[limb.first + k] = directionAt(s, limb, k);
+        }
     }
     return s;
 }
@@ -354,19 +372,6 @@ RingPlace ringAtPoint(const WeldSkeleton& s, const WeldLimb& limb, std::uint32_t
     place.edgeNode = s.pointNode[k > 0 ? p : p + 1];
     place.edgeFraction = k > 0 ? 1.0 : 0.0;
     return place;
-}
-
-Vec3 pointDirection(const WeldSkeleton& s, const WeldLimb& limb, std::uint32_t k) {
-    const std::uint32_t p = limb.first + k;
-    const Vec3 in =
-        k > 0 ? Vec3((s.pointPosition[p] - s.pointPosition[p - 1]).normalized()) : Vec3::Zero();
-    const Vec3 out = k + 1 < limb.count
-                         ? Vec3((s.pointPosition[p + 1] - s.pointPosition[p]).normalized())
-                         : Vec3::Zero();
-    const Vec3 sum = in + out;
-    const double length2 = sum.squaredNorm();
-    if (length2 > 1e-12) return sum / std::sqrt(length2);
-    return k > 0 ? in : out;
 }
 
 }  // namespace ramus::detail

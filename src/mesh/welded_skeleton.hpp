@@ -37,6 +37,10 @@ struct WeldSkeleton {
     std::vector<double> pointArc;         ///< arc length from the limb's start
     std::vector<double> pointRadius;      ///< tube radius there (as buildTubeMesh's rings)
     std::vector<NodeId> pointNode;        ///< the tree node of each limb point
+    /// Per limb point: pointDirection's unit direction of its limb there, computed once (the
+    /// junction solver reads it for every ring it moves, in every step: ABOP 1.24c's serial ring
+    /// placement had spent a sixth of its time normalizing the same edges again).
+    std::vector<Vec3> pointDirections;
     double maxRadius = 0.0;
     double mergeDistance = 0.0;
 
@@ -61,19 +65,32 @@ struct RingPlace {
 RingPlace ringOnLimb(const WeldSkeleton& skeleton, const WeldLimb& limb, bool fromEnd, double t);
 
 /// Unit direction of the limb at point k (k inside: bisector of its two edges).
-Vec3 pointDirection(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uint32_t k);
+inline const Vec3& pointDirection(const WeldSkeleton& skeleton, const WeldLimb& limb,
+                                  std::uint32_t k) {
+    return skeleton.pointDirections[limb.first + k];
+}
 
 /// The ring at limb point k (its node), facing pointDirection. Its edge is the one into the
 /// point's node (k = 0: the start of the limb's first edge), as buildTubeMesh's ring there.
 RingPlace ringAtPoint(const WeldSkeleton& skeleton, const WeldLimb& limb, std::uint32_t k);
 
-/// How far a ring (centre, unit normal, radius) reaches in front of the plane of `ring`: its
-/// centre's height over the plane plus radius · sin of the angle between the two normals.
-inline double reachInFront(const RingPlace& ring, const Vec3& center, const Vec3& normal,
+/// The height of `point` over the plane of `ring` (along its normal).
+inline double heightOver(const RingPlace& ring, const Vec3& point) {
+    return (point - ring.center).dot(ring.normal);
+}
+
+/// How far a ring (unit normal, radius; its centre `height` over the plane of `ring`) reaches in
+/// front of that plane: the height plus radius · sin of the angle between the two normals. In
+/// floating point too it is at most height + radius (the sine is at most 1, and rounding is
+/// monotone), which the junction solver uses to pass over rings far behind.
+inline double reachInFront(const RingPlace& ring, double height, const Vec3& normal,
                            double radius) {
     const double cosine = ring.normal.dot(normal);
-    return (center - ring.center).dot(ring.normal) +
-           radius * std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+    return height + radius * std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+}
+inline double reachInFront(const RingPlace& ring, const Vec3& center, const Vec3& normal,
+                           double radius) {
+    return reachInFront(ring, heightOver(ring, center), normal, radius);
 }
 
 /// Points within this fraction of their radius of the chord are left out by
