@@ -105,10 +105,11 @@ private:
     // boxes or tested), and how many the repair may look at before it stops moving vertices.
     mutable std::uint64_t work_ = 0;
     std::uint64_t workLimit_;
-    bool overWorkLimit(CrossingRepair& repair) const {
+    bool pastWorkLimit() const { return work_ > workLimit_; }
+    // What the repair reports of its work, once it is done.
+    void reportWork(CrossingRepair& repair) const {
         repair.work = work_;
-        repair.overWorkLimit = work_ > workLimit_;
-        return repair.overWorkLimit;
+        repair.overWorkLimit = pastWorkLimit();
     }
 };
 
@@ -515,13 +516,13 @@ CrossingRepair Separator::unpinchAll(std::span<const std::uint32_t> vertices) {
     cover(vertices);
     CrossingRepair repair;
     for (std::uint32_t v : vertices) {
-        if (overWorkLimit(repair)) break;
+        if (pastWorkLimit()) break;
         std::uint32_t& shared = sharing.at(bitsOf(originalOf(v)));
         if (shared < 2 || s_.points[v] != originalOf(v) || !movable(v) || !unpinch(v)) continue;
         --shared;
         ++repair.movedVertices;
     }
-    overWorkLimit(repair);
+    reportWork(repair);
     return repair;
 }
 
@@ -547,7 +548,7 @@ CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
                 const std::uint32_t mine = side == 0 ? f : g;
                 const std::uint32_t partner = side == 0 ? g : f;
                 for (std::uint32_t v : s_.triangles[mine]) {
-                    if (overWorkLimit(repair)) break;
+                    if (pastWorkLimit()) break;
                     if (!movable(v) || !separate(v, partner)) continue;
                     ++repair.movedVertices;
                     crossingsAround(v, &made);
@@ -555,13 +556,13 @@ CrossingRepair Separator::run(std::span<const TrianglePair> crossing) {
                 }
             }
         }
-        if (made.empty() || overWorkLimit(repair)) break;
+        if (made.empty() || pastWorkLimit()) break;
         pending.insert(pending.end(), made.begin(), made.end());
         std::sort(pending.begin(), pending.end());
         pending.erase(std::unique(pending.begin(), pending.end()), pending.end());
         std::erase_if(pending, [&](const TrianglePair& p) { return !cross(p.first, p.second); });
     }
-    overWorkLimit(repair);
+    reportWork(repair);
     repair.pairsLeft = static_cast<std::size_t>(
         std::count_if(pending.begin(), pending.end(),
                       [&](const TrianglePair& p) { return cross(p.first, p.second); }));

@@ -13,6 +13,7 @@
 #include <numeric>
 #include <vector>
 
+#include "box_mesh.hpp"
 #include "ramus/rng.hpp"
 #include "welded_checks.hpp"
 
@@ -259,23 +260,24 @@ TEST(CrossingRepair, PinchedEdgesPartByTheOtherSheetWhereTheFirstCannotMove) {
 // the middle has most of the surface within reach. The crossings are real, so no move separates
 // them and the repair would try every move of every corner of every pair.
 detail::CrossingSurface starOfPlanks(int planks) {
-    detail::CrossingSurface s;
-    const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    Mesh mesh;
     for (int p = 0; p < planks; ++p) {
+        const auto first = mesh.positions.size();
+        const double lift = 0.001 * p;
+        test::appendBox(mesh, Vec3(-1.0, -0.1, lift - 0.01), Vec3(1.0, 0.1, lift + 0.01));
         const double angle = 3.14159265358979 * p / planks;
         const double c = std::cos(angle), sn = std::sin(angle);
-        const auto base = static_cast<std::uint32_t>(s.points.size());
-        for (int i = 0; i < 8; ++i) {
-            const double x = i & 1 ? 1.0 : -1.0, y = i & 2 ? 0.1 : -0.1,
-                         z = (i & 4 ? 0.01 : -0.01) + 0.001 * p;
-            s.points.emplace_back(static_cast<float>(c * x - sn * y),
-                                  static_cast<float>(sn * x + c * y), static_cast<float>(z));
+        for (std::size_t v = first; v < mesh.positions.size(); ++v) {
+            const Vec3 q = mesh.positions[v].cast<double>();
+            mesh.positions[v] =
+                Vec3(c * q.x() - sn * q.y(), sn * q.x() + c * q.y(), q.z()).cast<float>();
         }
-        for (const auto& q : quads) {
-            s.triangles.push_back({base + q[0], base + q[1], base + q[2]});
-            s.triangles.push_back({base + q[0], base + q[2], base + q[3]});
-        }
+    }
+    detail::CrossingSurface s;
+    s.points = mesh.positions;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        s.triangles.push_back(
+            {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
     }
     return s;
 }
