@@ -9,7 +9,7 @@ RAMUS     := $(BUILD)/ramus
 
 .PHONY: all deps build run showcase serve test check-tests studio-e2e validate three-load blender-import format \
         format-check bench bench-peers fuzz fuzz-build fuzz-build-only fuzz-smoke fuzz-union \
-        checks-and-fuzz-build fuzz-build-after-tests batch-check union-check random-union-check \
+        checks-and-fuzz-build fuzz-build-after-tests batch-check union-check random-union-check weld-rates \
         check-floats clean
 
 all: build
@@ -109,6 +109,11 @@ union-check: build
 # build, about a minute; docs/welded.md, Performance, "Session 44").
 random-union-check: build
 	python3 scripts/random-unions.py --ramus $(RAMUS) --from 1 --to 400 --timeout 60
+
+# One-shot `ramus --weld` rate of every shipped example, best of 8 (scripts/mesh-rates.py; Release
+# build, about a minute; issue 9 asks for 1 M welded triangles/s; docs/BENCHMARKS.md, session 46).
+weld-rates: build
+	python3 scripts/mesh-rates.py --ramus $(RAMUS) --mode=--weld --runs 8 --min-rate 1
 
 FORMAT_FILES = $(shell git ls-files '*.cpp' '*.hpp')
 format: deps
