@@ -118,6 +118,7 @@ void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
     if (report.weldedMeshes > 0) {
         stats["weld_fallbacks"] = report.weldFallbacks;
         stats["weld_crossings"] = report.weldCrossings;
+        stats["weld_shared_rings"] = report.weldSharedRings;
         stats["weld_shrunk_junctions"] = report.shrunkJunctions;
     }
     if (report.unionsApplied + report.unionsFailed > 0) {

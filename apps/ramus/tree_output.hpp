@@ -130,7 +130,8 @@ void addStageSeconds(nlohmann::ordered_json& stats, const StageTimer& timer);
 /// "<stage>_seconds" for every stage of `timer`.
 void printTreeStats(nlohmann::ordered_json counts, const TreeModel& model, const StageTimer& timer);
 
-/// Adds, when the bark was welded, "weld_fallbacks" and "weld_crossings", and with the union
+/// Adds, when the bark was welded, "weld_fallbacks", "weld_crossings", "weld_shared_rings" and
+/// "weld_shrunk_junctions", and with the union
 /// "unions_applied", "unions_failed", "unions_of_convex_junctions", "union_crossings_left",
 /// "union_pinched_edges", "union_touching_points", "union_crossing_moves",
 /// "union_collapsed_edges", "union_attempts", "union_postponed_moves" and "union_reunions" to

@@ -60,6 +60,8 @@ struct TreeMeshReport {
     /// capped tubes: the surface is several overlapping pieces) and ::crossings (limbs too
     /// short for both their rings: the surface intersects itself there).
     std::size_t weldFallbacks = 0, weldCrossings = 0;
+    /// Over them, WeldReport::sharedRings (such limbs whose two junctions share one ring).
+    std::size_t weldSharedRings = 0;
     std::size_t shrunkJunctions = 0;  ///< WeldReport::refinedJunctions over them
     std::size_t unionsApplied = 0;    ///< tree meshes replaced by their union's surface
     std::size_t unionsFailed = 0;     ///< tree meshes left welded (overlapping), see firstFailure

@@ -60,6 +60,10 @@ struct WeldReport {
     /// Limbs between two junctions too short for both end rings, left overlapping (the
     /// surface stays closed but intersects itself there).
     std::size_t crossings = 0;
+    /// Such limbs where a plane parts the rings of the two junctions: one ring in that plane,
+    /// which both junctions take as their arm's ring, instead of a ring each (then each hull lies
+    /// on its own side of the plane and the surface does not intersect itself there).
+    std::size_t sharedRings = 0;
     std::size_t fallbacks = 0;  ///< junctions left as separately capped tubes (should be 0)
     /// Limbs inside such junctions (between their merged branch nodes), meshed as capped tubes
     /// of their own.

@@ -32,6 +32,7 @@ void addReport(TreeMeshReport& total, const TreeMeshReport& more) {
     total.weldedMeshes += more.weldedMeshes;
     total.weldFallbacks += more.weldFallbacks;
     total.weldCrossings += more.weldCrossings;
+    total.weldSharedRings += more.weldSharedRings;
     total.shrunkJunctions += more.shrunkJunctions;
     total.unionsApplied += more.unionsApplied;
     total.unionsFailed += more.unionsFailed;
@@ -136,6 +137,7 @@ public:
             ++report.weldedMeshes;
             report.weldFallbacks += weld.fallbacks;
             report.weldCrossings += weld.crossings;
+            report.weldSharedRings += weld.sharedRings;
             report.shrunkJunctions += weld.refinedJunctions;
         }
         if (d.solidUnion) {

@@ -112,7 +112,7 @@ protected:
     const AngleTable& table(int n);  // built on first use
     WindSample windAt(const RingPlace& place) const;
     RingRecord emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
-                        const WindSample& wind);
+                        const WindSample& wind, const Vec3* plane = nullptr);
     RingRecord ringAfter(const RingRecord& previous, const RingPlace& place, float v);
     void emitSides(std::uint32_t a, std::uint32_t b, int n);
     void emitCap(const RingRecord& ring, const Vec3& normal, bool tip, const Vec3& centre);
@@ -148,6 +148,7 @@ private:
     // welded_mesher.cpp
     void gatherLimbRings(std::int32_t limb);
     void meshLimb(std::int32_t limb);
+    void meshSharedRing(std::int32_t limb);
     void meshAbsorbedLimb(std::int32_t limb);
     void emitPointsBeforeRings(std::int32_t limb);
     double vFromNode(const WeldLimb& limb, bool fromEnd, std::uint32_t k, double v) const;

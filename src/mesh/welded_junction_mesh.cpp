@@ -461,7 +461,11 @@ void JunctionMesher::fallbackJunction() {
         const RingRecord arm = armBackToNode(h);
         const Vec3 capNormal = -arm.outward;
         const double ahead = (h.node - arm.center).dot(capNormal);
-        if (!(ahead > 0.05 * arm.radius)) {
+        // A ring shared with the junction across the plane it lies in stays flat: a tube past
+        // the node could reach across the plane into the other junction.
+        const bool shared =
+            junctions_.sharedNormal[static_cast<std::size_t>(h.limb)] != Vec3::Zero();
+        if (shared || !(ahead > 0.05 * arm.radius)) {
             emitCap(arm, capNormal, !h.start, arm.center);
             continue;
         }

@@ -16,7 +16,9 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 
+#include "ramus/math.hpp"
 #include "welded_skeleton.hpp"
 
 namespace ramus::detail {
@@ -30,6 +32,12 @@ constexpr int kMaxIterations = 240;
 // (bench/welded_bench.cpp).
 constexpr std::uint32_t kMaxMembers = 16;
 constexpr std::uint32_t kMaxDiscs = 256;
+// Directions tried for the plane of a ring shared by two junctions (shareCrossingRings): tilted
+// from the limb by kSharedTiltStep degrees at a time up to kMaxSharedTilt, kSharedTurns around.
+// Measured on conifer's crossing: parted at 10° by 0.185 of the limb's radius.
+constexpr double kSharedTiltStep = 5.0;
+constexpr double kMaxSharedTilt = 60.0;
+constexpr int kSharedTurns = 36;
 
 struct Arm {
     std::int32_t limb;
@@ -82,6 +90,12 @@ private:
     double straightAhead(const Arm& arm) const;
     std::vector<Front> fronts_;
     std::vector<double> step_;
+    // Limbs found too short for both rings, once for every time they were (crossings).
+    std::vector<std::int32_t> crossingLimbs_;
+    void shareCrossingRings();
+    std::vector<Disc> junctionDiscs(NodeId cluster, std::int32_t without);
+    bool separatingPlane(const std::vector<Disc>& from, const std::vector<Disc>& to,
+                         const Vec3& axis, double clearance, Vec3& normal, double& offset) const;
 };
 
 JunctionSolver::JunctionSolver(const WeldSkeleton& skeleton, double margin)
@@ -92,6 +106,8 @@ JunctionSolver::JunctionSolver(const WeldSkeleton& skeleton, double margin)
     out_.startOffset.assign(skeleton.limbs.size(), 0.0);
     out_.endOffset.assign(skeleton.limbs.size(), 0.0);
     out_.absorbed.assign(skeleton.limbs.size(), 0);
+    out_.sharedNormal.assign(skeleton.limbs.size(), Vec3::Zero());
+    out_.sharedOffset.assign(skeleton.limbs.size(), 0.0);
     parent_.assign(n, kNoNode);
     tail_.assign(n, kNoNode);
     solved_.assign(n, 0);
@@ -324,6 +340,115 @@ void JunctionSolver::settle(NodeId cluster) {
     solved_[static_cast<std::size_t>(cluster)] = 1;
 }
 
+// The rings, discs and branch nodes of junction `cluster` as the mesher's hull takes them, its
+// arm rings where the solve left them, but for limb `without`'s: discs, the nodes as discs of
+// radius 0 (so that a plane between two junctions' discs crosses the limb between them).
+std::vector<Disc> JunctionSolver::junctionDiscs(NodeId cluster, std::int32_t without) {
+    gather(cluster);
+    std::vector<Disc> discs = discs_;
+    for (const Arm& arm : arms_) {
+        if (arm.limb == without) continue;
+        const auto li = static_cast<std::size_t>(arm.limb);
+        const WeldLimb& l = s_.limbs[li];
+        const double t = arm.atEnd ? out_.endOffset[li] : out_.startOffset[li];
+        const RingPlace ring = ringOnLimb(s_, l, arm.atEnd, t);
+        discs.push_back({ring.center, ring.normal, ring.radius});
+        forEachPointBeforeRing(s_, l, arm.atEnd, t, ring, kBeforeClearance * margin_,
+                               [&](std::uint32_t k, const Vec3& normal) {
+                                   discs.push_back({s_.pointPosition[l.first + k], normal,
+                                                    s_.pointRadius[l.first + k]});
+                               });
+        discs.push_back(
+            {s_.pointPosition[arm.atEnd ? l.first + l.count - 1 : l.first], ring.normal, 0.0});
+    }
+    return discs;
+}
+
+// A plane with every disc of `from` behind it and every disc of `to` in front, by `clearance`
+// each: of the directions tilted from `axis` by 0°, 5°, … up to kMaxSharedTilt (36 around each),
+// the least tilted that parts them so, and of those the one with the widest gap; the plane
+// halfway across the gap. False if none does.
+bool JunctionSolver::separatingPlane(const std::vector<Disc>& from, const std::vector<Disc>& to,
+                                     const Vec3& axis, double clearance, Vec3& normal,
+                                     double& offset) const {
+    // The farthest a disc reaches along unit direction d: its centre's height plus its radius
+    // times the sine between d and its normal.
+    auto reach = [](const Disc& disc, const Vec3& d) {
+        const double cosine = disc.normal.dot(d);
+        return disc.radius * std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+    };
+    const Vec3 e1 = axis.unitOrthogonal();
+    const Vec3 e2 = axis.cross(e1);
+    for (int tilt = 0; tilt * kSharedTiltStep <= kMaxSharedTilt; ++tilt) {
+        const double theta = degToRad(tilt * kSharedTiltStep);
+        double widest = 2.0 * clearance;
+        const int turns = tilt == 0 ? 1 : kSharedTurns;
+        for (int turn = 0; turn < turns; ++turn) {
+            const double phi = 2.0 * kPi * turn / kSharedTurns;
+            const Vec3 d = std::cos(theta) * axis +
+                           std::sin(theta) * (std::cos(phi) * e1 + std::sin(phi) * e2);
+            double back = -std::numeric_limits<double>::infinity();
+            double front = std::numeric_limits<double>::infinity();
+            for (const Disc& disc : from)
+                back = std::max(back, disc.center.dot(d) + reach(disc, d));
+            for (const Disc& disc : to)
+                front = std::min(front, disc.center.dot(d) - reach(disc, d));
+            if (front - back > widest) {
+                widest = front - back;
+                normal = d;
+                offset = 0.5 * (back + front);
+            }
+        }
+        if (widest > 2.0 * clearance) return true;
+    }
+    return false;
+}
+
+// A crossing limb (too short for a ring at each end, between two junctions too full to merge)
+// whose junctions' rings a plane parts gets one ring in that plane, the section of its tube
+// there, which both junctions take as their arm's ring: each hull then lies on its own side of
+// the plane (a hull's face's plane has the whole hull behind it), so the two meet in that ring
+// and nowhere else, where their rings passing each other had made them overlap. Only a straight
+// limb (no inner points, whose rings would be hull points on either side) between junctions
+// with no other crossing (another shared ring would be one of their rings too, which this
+// plane has not parted). Run once every junction is placed.
+void JunctionSolver::shareCrossingRings() {
+    std::vector<std::uint32_t> crossingsAt(parent_.size(), 0);  // per cluster root: limbs
+    std::vector<std::int32_t> limbs = crossingLimbs_;
+    std::sort(limbs.begin(), limbs.end());
+    limbs.erase(std::unique(limbs.begin(), limbs.end()), limbs.end());
+    auto ends = [&](std::int32_t limb) {
+        const WeldLimb& l = s_.limbs[static_cast<std::size_t>(limb)];
+        return std::pair{find(l.startKey), find(l.endKey)};
+    };
+    for (const std::int32_t limb : limbs) {
+        const auto [a, b] = ends(limb);
+        ++crossingsAt[static_cast<std::size_t>(a)];
+        if (b != a) ++crossingsAt[static_cast<std::size_t>(b)];
+    }
+    for (const std::int32_t limb : limbs) {
+        const auto li = static_cast<std::size_t>(limb);
+        const WeldLimb& l = s_.limbs[li];
+        const auto [a, b] = ends(limb);
+        if (a == b || l.count != 2 || crossingsAt[static_cast<std::size_t>(a)] != 1 ||
+            crossingsAt[static_cast<std::size_t>(b)] != 1) {
+            continue;
+        }
+        const Vec3 axis = (s_.pointPosition[l.first + 1] - s_.pointPosition[l.first]).normalized();
+        const double clearance =
+            margin_ * std::min(s_.pointRadius[l.first], s_.pointRadius[l.first + 1]);
+        const std::vector<Disc> from = junctionDiscs(a, limb);
+        const std::vector<Disc> to = junctionDiscs(b, limb);
+        if (!separatingPlane(from, to, axis, clearance, out_.sharedNormal[li],
+                             out_.sharedOffset[li])) {
+            continue;
+        }
+        ++out_.sharedRings;
+        out_.crossings -= static_cast<std::size_t>(
+            std::count(crossingLimbs_.begin(), crossingLimbs_.end(), limb));
+    }
+}
+
 WeldJunctions JunctionSolver::solve() {
     std::deque<NodeId> queue;
     for (std::size_t i = 0; i < parent_.size(); ++i) {
@@ -365,6 +490,7 @@ WeldJunctions JunctionSolver::solve() {
             if (!solved_[static_cast<std::size_t>(neighbour)] || fitsBothEnds(arm.limb)) continue;
             if (!canJoin(cluster, neighbour, arm.limb)) {
                 ++out_.crossings;  // the limb's two rings pass each other: a local overlap
+                crossingLimbs_.push_back(arm.limb);
                 continue;
             }
             out_.absorbed[static_cast<std::size_t>(arm.limb)] = 1;
@@ -375,6 +501,7 @@ WeldJunctions JunctionSolver::solve() {
             break;
         }
     }
+    shareCrossingRings();
     // Final clusters: roots in id order; every member points at its root.
     for (std::size_t i = 0; i < parent_.size(); ++i) {
         if (parent_[i] == kNoNode) continue;

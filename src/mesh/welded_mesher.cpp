@@ -146,8 +146,41 @@ void WeldBuilder::gatherLimbRings(std::int32_t l) {
         v - (length - arc) * vScale_ / (radius + s.pointRadius[limb.first + last]);
 }
 
+// A crossing limb whose junctions share one ring (WeldJunctions::sharedNormal): that ring,
+// where the limb crosses the plane parting the two junctions, and no tube; each junction takes
+// it as its arm's ring, facing away from it across the plane. A straight limb (two points).
+void WeldBuilder::meshSharedRing(std::int32_t l) {
+    const WeldSkeleton& s = skeleton_;
+    const auto li = static_cast<std::size_t>(l);
+    const WeldLimb& limb = s.limbs[li];
+    const Vec3& plane = junctions_.sharedNormal[li];
+    const Vec3& from = s.pointPosition[limb.first];
+    const double length = s.limbLength(limb);
+    const double heightFrom = junctions_.sharedOffset[li] - from.dot(plane);
+    const double rise = (s.pointPosition[limb.first + 1] - from).dot(plane);
+    const double arc = std::clamp(heightFrom / rise, 0.0, 1.0) * length;
+    const RingPlace place = ringOnLimb(s, limb, false, arc);
+    // Texture v as along the tube from the start node, and on from the ring to the end node.
+    const double startRadius = s.pointRadius[limb.first];
+    const double endRadius = s.pointRadius[limb.first + 1];
+    const double v = keyV_[static_cast<std::size_t>(limb.startKey)] -
+                     arc * vScale_ / (startRadius + place.radius);
+    keyV_[static_cast<std::size_t>(limb.endKey)] =
+        v - (length - arc) * vScale_ / (place.radius + endRadius);
+    RingRecord ring = emitRing(place, initialReference(place.normal), static_cast<float>(v),
+                               limb.segments, windAt(place), &plane);
+    startRing_[li] = ring;
+    ring.outward = -plane;
+    endRing_[li] = ring;
+}
+
 void WeldBuilder::meshLimb(std::int32_t l) {
     const WeldLimb& limb = skeleton_.limbs[static_cast<std::size_t>(l)];
+    if (junctions_.sharedNormal[static_cast<std::size_t>(l)] != Vec3::Zero()) {
+        meshSharedRing(l);
+        emitPointsBeforeRings(l);  // none (a straight limb), but its rings' range is set
+        return;
+    }
     gatherLimbRings(l);
     const int n = limb.segments;
     Vec3 normal = rings_[0].place.normal;
@@ -270,8 +303,14 @@ RingRecord WeldEmitter::ringAfter(const RingRecord& previous, const RingPlace& p
     return emitRing(place, e1, v, previous.n, windAt(place));
 }
 
+// With `plane` (a unit normal not square to place.normal) the ring is the tube's section by
+// the plane through place.center with that normal, not the circle square to the tube: every
+// vertex slid along the tube onto the plane (a ring two junctions share,
+// WeldBuilder::meshSharedRing). The record's frame then spans that ellipse (vertex i at
+// center + radius (cos_i e1 + sin_i e2), e1 and e2 neither unit nor square) and it faces along
+// the plane's normal; the vertices keep the tube's normals.
 RingRecord WeldEmitter::emitRing(const RingPlace& place, const Vec3& e1, float v, int n,
-                                 const WindSample& wind) {
+                                 const WindSample& wind, const Vec3* plane) {
     const AngleTable& angles = table(n);
     RingRecord ring;
     ring.wind = wind;
@@ -286,12 +325,23 @@ RingRecord WeldEmitter::emitRing(const RingPlace& place, const Vec3& e1, float v
     const Vec3f a = e1.cast<float>();
     const Vec3f b = ring.e2.cast<float>();
     const auto r = static_cast<float>(place.radius);
+    if (plane != nullptr) {
+        const double along = place.normal.dot(*plane);
+        ring.e1 -= (ring.e1.dot(*plane) / along) * place.normal;
+        ring.e2 -= (ring.e2.dot(*plane) / along) * place.normal;
+        ring.outward = *plane;
+    }
     for (std::size_t i = 0; i < angles.cosines.size(); ++i) {
         const float cs = angles.cosines[i];
         const float sn = angles.sines[i];
         const Vec3f radial = cs * a + sn * b;
         const Vec3f tangent = cs * b - sn * a;  // direction of increasing u
-        mesh_.positions.push_back(c + r * radial);
+        if (plane != nullptr) {
+            mesh_.positions.push_back(
+                (place.center + place.radius * (cs * ring.e1 + sn * ring.e2)).cast<float>());
+        } else {
+            mesh_.positions.push_back(c + r * radial);
+        }
         mesh_.normals.push_back(radial);
         mesh_.tangents.emplace_back(tangent.x(), tangent.y(), tangent.z(), 1.0f);
         mesh_.uvs.emplace_back(angles.us[i], v);
@@ -470,6 +520,7 @@ Mesh WeldBuilder::build(WeldReport* report) {
         report_.absorbedLimbs = junctions_.absorbedLimbs;
         report_.crowded = junctions_.crowded;
         report_.crossings = junctions_.crossings;
+        report_.sharedRings = junctions_.sharedRings;
         for (std::size_t i = 0; i < s.rep.size(); ++i) {
             if (s.key[i] && s.inLimb[i] < 0) ++report_.components;
         }

@@ -145,6 +145,13 @@ struct WeldJunctions {
     std::size_t absorbedLimbs = 0;
     std::size_t crowded = 0;    ///< junctions at their size limit with rings that do not fit
     std::size_t crossings = 0;  ///< limbs too short for both end rings (rings pass each other)
+    /// Per limb: the plane of one ring that both junctions at its ends share instead of a ring
+    /// each (shareCrossingRing), as a unit normal pointing from the start key's junction to the
+    /// end key's and the offset of its points x (sharedNormal · x = sharedOffset); a zero normal
+    /// for every other limb.
+    std::vector<Vec3> sharedNormal;
+    std::vector<double> sharedOffset;
+    std::size_t sharedRings = 0;  ///< crossing limbs given a shared ring (not in `crossings`)
 };
 
 /// Places every limb's end rings so that at each junction no ring's plane cuts another

@@ -106,6 +106,21 @@ TEST(WeldCli, WeldingThatLeavesPiecesIsCountedAndWarned) {
                      .contains("weld_fallbacks"));  // tubes: nothing welded
 }
 
+// The conifer example's one limb too short for a ring at each end, between two junctions too
+// full to merge, gets one ring both share (docs/welded.md, "How it works", step 4): counted as
+// a shared ring, not a crossing, and the bark is one clean surface (no warning).
+TEST(WeldCli, ACrossingWhoseJunctionsSharePartsIsCountedAsASharedRing) {
+    const fs::path dir = scratchDirectory("weld_shared_ring");
+    const CommandResult r = runRamus(
+        "colonize " RAMUS_SOURCE_DIR "/examples/colonize/conifer.json --weld --stats", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json counts = nlohmann::json::parse(r.out);
+    EXPECT_EQ(counts["weld_crossings"], 0);
+    EXPECT_EQ(counts["weld_fallbacks"], 0);
+    EXPECT_EQ(counts["weld_shared_rings"], 1);
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
 // examples/colonize/fig3_2_ring.json with `meshKeys` added to its "mesh" object, written to
 // dir/ring.json.
 fs::path ringConfigWith(const fs::path& dir, const nlohmann::json& meshKeys) {
