@@ -459,32 +459,44 @@ void JunctionMesher::fallbackJunction() {
     for (const HullRing& h : hullRings_) {
         if (!h.hole()) continue;
         const RingRecord arm = armBackToNode(h);
-        const Vec3 capNormal = -arm.outward;
-        const double ahead = (h.node - arm.center).dot(capNormal);
-        // A ring shared with the junction across the plane it lies in stays flat: a tube past
-        // the node could reach across the plane into the other junction.
-        const bool shared =
-            junctions_.sharedNormal[static_cast<std::size_t>(h.limb)] != Vec3::Zero();
-        if (shared || !(ahead > 0.05 * arm.radius)) {
-            emitCap(arm, capNormal, !h.start, arm.center);
+        // Towards the node along the tube, and the tube's frame there (the arm ring's own: its
+        // plane is square to the tube).
+        Vec3 towardNode = -arm.outward;
+        Vec3 frameNormal = arm.e1.cross(arm.e2);
+        Vec3 e1 = arm.e1;
+        const auto li = static_cast<std::size_t>(h.limb);
+        if (junctions_.sharedNormal[li] != Vec3::Zero()) {
+            // A ring shared with the junction across its plane (a straight limb) is slanted to
+            // the tube and faces across the plane: the tube runs back square to the limb, on
+            // this side of the plane, and its frame is the ring's unslanted.
+            const WeldLimb& limb = skeleton_.limbs[li];
+            const Vec3 along =
+                (skeleton_.pointPosition[limb.first + 1] - skeleton_.pointPosition[limb.first])
+                    .normalized();
+            towardNode = h.start ? Vec3(-along) : along;
+            frameNormal = along;
+            e1 = (arm.e1 - arm.e1.dot(along) * along).normalized();
+        }
+        const double ahead = (h.node - arm.center).dot(towardNode);
+        if (!(ahead > 0.05 * arm.radius)) {
+            emitCap(arm, -arm.outward, !h.start, arm.center);
             continue;
         }
         // The ring past the node keeps the arm ring's frame; texture v runs on along the arm.
-        const Vec3 frameNormal = arm.e1.cross(arm.e2);
         RingPlace place;
-        place.center = h.node + 0.25 * arm.radius * capNormal;
+        place.center = h.node + 0.25 * arm.radius * towardNode;
         place.normal = frameNormal;
         place.radius = arm.radius;
         const float ringV = mesh_.uvs[arm.base].y();
         const double dv = (ahead + 0.25 * arm.radius) * vScale_ / (2.0 * arm.radius);
         const auto v = static_cast<float>(ringV + (h.start ? dv : -dv));
-        const RingRecord pastNode = emitRing(place, arm.e1, v, arm.n, arm.wind);
+        const RingRecord pastNode = emitRing(place, e1, v, arm.n, arm.wind);
         if (h.start) {
             emitSides(pastNode.base, arm.base, arm.n);
         } else {
             emitSides(arm.base, pastNode.base, arm.n);
         }
-        emitCap(pastNode, capNormal, !h.start, place.center + 0.5 * arm.radius * capNormal);
+        emitCap(pastNode, towardNode, !h.start, place.center + 0.5 * arm.radius * towardNode);
     }
     // The limbs inside the junction (between its merged branch nodes) become tubes of their
     // own. The convex hull of their rings, which this used before, spans the whole crowded

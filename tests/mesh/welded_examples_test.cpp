@@ -242,6 +242,29 @@ TEST(WeldedExamples, EveryColonizationExampleIsClosedGenusZeroSurfaces) {
     });
 }
 
+// A random plant (session 46, seed 386 of make random-union-check) with two crossing limbs
+// whose junctions share a ring (docs/welded.md, "How it works", step 4), a junction beside one
+// of them falling back: its arm there must run as a tube from the shared ring back past its
+// node, as every fallback arm does. Closed flat in the ring's plane instead, the stretch of the
+// limb between that plane and the node had no surface (an edge midpoint outside; 48 on another
+// plant).
+TEST(WeldedExamples, AFallbackJunctionRunsItsSharedRingBackToItsNode) {
+    const LSystem system = parseLSystem(
+        "derivations: 4\nangle: 60\naxiom: F[+X]F[-X]\nX -> F|XF[|XFFF[XX][X+X]]\n"
+        "F -> F[+F]F\n");
+    const BranchTree tree =
+        interpretTurtle(deriveLSystem(system), system.symbols, turtleParamsFrom(system.settings))
+            .tree;
+    WeldReport report;
+    const Mesh mesh = buildWeldedTreeMesh(tree, {}, &report);
+    EXPECT_GT(report.sharedRings, 0u);
+    EXPECT_GT(report.fallbacks, 0u);
+    const auto [outside, edges] = branchesOutside(tree, mesh);
+    std::printf("%zu shared rings, %zu fallbacks, %zu of %zu edge midpoints outside\n",
+                report.sharedRings, report.fallbacks, outside, edges);
+    EXPECT_EQ(outside, 0u);
+}
+
 // The most distinct vertex positions of `mesh` in one cube of side `cell`.
 std::size_t crowdedPositions(const Mesh& mesh, double cell) {
     std::set<std::array<float, 3>> positions;
