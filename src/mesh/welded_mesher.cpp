@@ -39,6 +39,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <numeric>
 #include <utility>
 
 #include "ramus/error.hpp"
@@ -416,9 +417,25 @@ void WeldBuilder::meshJunctions() {
     }
     std::vector<JunctionMesher::Piece> pieces(clusters.size());
     std::vector<std::uint32_t> pieceMesher(clusters.size(), 0);
+    // The largest junctions first (by the limbs meeting at their branch nodes), so that a slow
+    // one taken last does not leave the other threads idle; the pieces keep junction order.
+    std::vector<std::uint32_t> order(clusters.size());
+    std::iota(order.begin(), order.end(), 0u);
+    if (threads > 1) {
+        std::vector<std::uint32_t> limbsAt(clusters.size(), 0);
+        for (std::size_t j = 0; j < clusters.size(); ++j) {
+            for (NodeId m = clusters[j]; m != kNoNode;
+                 m = junctions_.nextMember[static_cast<std::size_t>(m)]) {
+                limbsAt[j] += skeleton_.degree[static_cast<std::size_t>(m)];
+            }
+        }
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::uint32_t a, std::uint32_t b) { return limbsAt[a] > limbsAt[b]; });
+    }
     forEachOnThreads(
         clusters.size(), threads,
-        [&](std::size_t j, std::size_t w) {
+        [&](std::size_t k, std::size_t w) {
+            const std::uint32_t j = order[k];
             pieces[j] = meshers[w].meshJunction(clusters[j]);
             pieceMesher[j] = static_cast<std::uint32_t>(w);
         },
