@@ -469,10 +469,7 @@ void JunctionMesher::fallbackJunction() {
             // A ring shared with the junction across its plane (a straight limb) is slanted to
             // the tube and faces across the plane: the tube runs back square to the limb, on
             // this side of the plane, and its frame is the ring's unslanted.
-            const WeldLimb& limb = skeleton_.limbs[li];
-            const Vec3 along =
-                (skeleton_.pointPosition[limb.first + 1] - skeleton_.pointPosition[limb.first])
-                    .normalized();
+            const Vec3& along = pointDirection(skeleton_, skeleton_.limbs[li], 0);
             towardNode = h.start ? Vec3(-along) : along;
             frameNormal = along;
             e1 = (arm.e1 - arm.e1.dot(along) * along).normalized();

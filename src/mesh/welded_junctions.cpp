@@ -434,7 +434,7 @@ void JunctionSolver::shareCrossingRings() {
             crossingsAt[static_cast<std::size_t>(b)] != 1) {
             continue;
         }
-        const Vec3 axis = (s_.pointPosition[l.first + 1] - s_.pointPosition[l.first]).normalized();
+        const Vec3& axis = pointDirection(s_, l, 0);  // the straight limb's direction
         const double clearance =
             margin_ * std::min(s_.pointRadius[l.first], s_.pointRadius[l.first + 1]);
         const std::vector<Disc> from = junctionDiscs(a, limb);
