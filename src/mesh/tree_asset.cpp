@@ -84,7 +84,7 @@ public:
         Mesh mesh;
         mesh.name = "tree";
         for (std::size_t t = 0; t < trees_.size(); ++t) {
-            appendMesh(mesh, meshes[t]);
+            appendMesh(mesh, std::move(meshes[t]));  // the first tree's arrays are taken
             if (report != nullptr) addReport(*report, reports[t]);
         }
         return mesh;
