@@ -118,6 +118,7 @@ void addBarkStats(nlohmann::ordered_json& stats, const TreeMeshReport& report) {
     if (report.weldedMeshes > 0) {
         stats["weld_fallbacks"] = report.weldFallbacks;
         stats["weld_crossings"] = report.weldCrossings;
+        stats["weld_crossing_tubes"] = report.weldCrossingTubes;
         stats["weld_shared_rings"] = report.weldSharedRings;
         stats["weld_shrunk_junctions"] = report.shrunkJunctions;
     }
@@ -145,10 +146,11 @@ std::string barkWarning(const TreeMeshReport& report) {
                ")";
     }
     if (report.unionsApplied > 0 || report.weldFallbacks + report.weldCrossings == 0) return {};
-    return "the welded bark is not one clean surface: " + std::to_string(report.weldFallbacks) +
-           " crowded junctions were closed as separate capped tubes and " +
+    return "the welded bark is not one clean surface: " +
+           std::to_string(report.weldFallbacks + report.weldCrossingTubes) +
+           " crowded junctions were closed as separate capped tubes (" +
            std::to_string(report.weldCrossings) +
-           " branches are too short for the rings at both ends (they overlap); " +
+           " branches between them too short for the rings at both ends), which overlap; " +
            (solidUnionAvailable()
                 ? "the solid union (--union) makes it one surface"
                 : "the solid union (--union) would make it one surface, but needs a build with "

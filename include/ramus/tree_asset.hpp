@@ -57,9 +57,10 @@ struct TreeMeshParams {
 struct TreeMeshReport {
     std::size_t weldedMeshes = 0;  ///< tree meshes welded (one per tree and level)
     /// Over them, before any union: WeldReport::fallbacks (crowded junctions closed as separate
-    /// capped tubes: the surface is several overlapping pieces) and ::crossings (limbs too
-    /// short for both their rings: the surface intersects itself there).
-    std::size_t weldFallbacks = 0, weldCrossings = 0;
+    /// capped tubes: the surface is several overlapping pieces), ::crossings (limbs too short
+    /// for both their rings) and ::crossingTubes (the junctions at those crossings, capped tubes
+    /// too).
+    std::size_t weldFallbacks = 0, weldCrossings = 0, weldCrossingTubes = 0;
     /// Over them, WeldReport::sharedRings (such limbs whose two junctions share one ring).
     std::size_t weldSharedRings = 0;
     std::size_t shrunkJunctions = 0;  ///< WeldReport::refinedJunctions over them

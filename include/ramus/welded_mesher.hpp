@@ -37,6 +37,11 @@ struct WeldedMeshParams {
     /// WeldReport::tubedForUnion); where that union is not clean (see
     /// WeldReport::convexForUnion) the hulls are.
     bool shrinkJunctions = true;
+    /// Without solidUnion: junctions at a crossing are capped tubes, as fallbacks
+    /// (WeldReport::crossingTubes), instead of hulls, which would overlap each other there
+    /// anyway and, shrunk over the crowded clusters where crossings happen, leave webs far
+    /// outside the branches. False keeps their hulls, as the solid union does.
+    bool tubesAtCrossings = true;
     /// With solidUnion: the most attempts of each union (unionClosedSurfaces' maxAttempts,
     /// clamped to 1–kSolidUnionAttempts): each is a whole union more where the last kept crossings
     /// or pinched edges, so fewer trade a clean surface for time.
@@ -65,6 +70,11 @@ struct WeldReport {
     /// on its own side of the plane and the surface does not intersect itself there).
     std::size_t sharedRings = 0;
     std::size_t fallbacks = 0;  ///< junctions left as separately capped tubes (should be 0)
+    /// Without solidUnion: junctions at a crossing (a limb of theirs in `crossings`), meshed as
+    /// capped tubes as a fallback is, without a hull: their hull would overlap the neighbour's
+    /// across the crossing anyway, and shrunk over such crowded clusters it left webs (fins)
+    /// far outside the branches.
+    std::size_t crossingTubes = 0;
     /// Limbs inside such junctions (between their merged branch nodes), meshed as capped tubes
     /// of their own.
     std::size_t absorbedTubes = 0;

@@ -32,6 +32,7 @@ void addReport(TreeMeshReport& total, const TreeMeshReport& more) {
     total.weldedMeshes += more.weldedMeshes;
     total.weldFallbacks += more.weldFallbacks;
     total.weldCrossings += more.weldCrossings;
+    total.weldCrossingTubes += more.weldCrossingTubes;
     total.weldSharedRings += more.weldSharedRings;
     total.shrunkJunctions += more.shrunkJunctions;
     total.unionsApplied += more.unionsApplied;
@@ -137,6 +138,7 @@ public:
             ++report.weldedMeshes;
             report.weldFallbacks += weld.fallbacks;
             report.weldCrossings += weld.crossings;
+            report.weldCrossingTubes += weld.crossingTubes;
             report.weldSharedRings += weld.sharedRings;
             report.shrunkJunctions += weld.refinedJunctions;
         }

@@ -230,6 +230,7 @@ private:
     void gatherJunction(NodeId cluster);
     void copyTubeRings();
     void closeJunction();
+    bool atCrossing() const;
     void eraseVertices(std::uint32_t first, std::uint32_t count);
     bool buildHull(std::size_t firstRing = 0);
     bool holesAreRings();

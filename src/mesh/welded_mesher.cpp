@@ -471,6 +471,7 @@ void WeldBuilder::meshJunctions() {
     for (const JunctionMesher& mesher : meshers) {
         const WeldReport& r = mesher.report();
         report_.fallbacks += r.fallbacks;
+        report_.crossingTubes += r.crossingTubes;
         report_.absorbedTubes += r.absorbedTubes;
         report_.nodeBalls += r.nodeBalls;
         report_.bendRings += r.bendRings;

@@ -143,8 +143,11 @@ struct WeldJunctions {
     std::vector<std::uint8_t> absorbed;    ///< per limb: 1 = lies inside a junction's hull
     std::size_t merges = 0;
     std::size_t absorbedLimbs = 0;
-    std::size_t crowded = 0;    ///< junctions at their size limit with rings that do not fit
-    std::size_t crossings = 0;  ///< limbs too short for both end rings (rings pass each other)
+    std::size_t crowded = 0;  ///< junctions at their size limit with rings that do not fit
+    /// Limbs between two junctions too short for both end rings (the rings pass each other),
+    /// counted once the junctions are placed; `crossing` flags them per limb (1).
+    std::size_t crossings = 0;
+    std::vector<std::uint8_t> crossing;
     /// Per limb: the plane of one ring that both junctions at its ends share instead of a ring
     /// each (shareCrossingRing), as a unit normal pointing from the start key's junction to the
     /// end key's and the offset of its points x (sharedNormal · x = sharedOffset); a zero normal

@@ -182,7 +182,7 @@ TEST_F(Studio, WeldsAndUnitesTheBarkAndWarnsOfPieces) {
     const std::string dense = readFile(RAMUS_SOURCE_DIR "/examples/lsystems/abop_1_27.lsys");
     const Reply welded = post("/api/lsystem", json{{"text", dense}, {"mesh", {{"weld", true}}}});
     ASSERT_EQ(welded.status, 200) << welded.body.dump().substr(0, 300);
-    EXPECT_GT(welded.body["stats"]["weld_fallbacks"].get<int>(), 0);
+    EXPECT_GT(welded.body["stats"]["weld_crossing_tubes"].get<int>(), 0);
     ASSERT_EQ(welded.body["warnings"].size(), 1u);
     EXPECT_NE(welded.body["warnings"][0].get<std::string>().find("not one clean surface"),
               std::string::npos);

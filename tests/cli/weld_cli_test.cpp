@@ -72,16 +72,17 @@ TEST(WeldCli, LsystemUnionUnitesTheWeldedBark) {
 }
 
 // --stats counts what welding alone could not make one clean surface, and the CLI warns and
-// points to --union: ABOP 1.27's crowded junctions fall back (docs/welded.md: 8 fallbacks, 27
-// crossings; at the 4 derivations used here, which unite 10 times faster, 1 and 4); tree_3d
-// welds cleanly (no warning), and with --union there is nothing to warn of.
+// points to --union: ABOP 1.27's crowded junctions are capped tubes at its crossings
+// (docs/welded.md: 27 crossings between 28 such junctions; at the 4 derivations used here,
+// which unite 10 times faster, 4 crossings); tree_3d welds cleanly (no warning), and with
+// --union there is nothing to warn of.
 TEST(WeldCli, WeldingThatLeavesPiecesIsCountedAndWarned) {
     const fs::path dir = scratchDirectory("weld_warning");
     const std::string dense = RAMUS_SOURCE_DIR "/examples/lsystems/abop_1_27.lsys -n 4";
     CommandResult r = runRamus("lsystem " + dense + " --weld --stats", dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     nlohmann::json counts = nlohmann::json::parse(r.out);
-    EXPECT_GT(counts["weld_fallbacks"].get<int>(), 0);
+    EXPECT_GT(counts["weld_crossing_tubes"].get<int>(), 0);
     EXPECT_GT(counts["weld_crossings"].get<int>(), 0);
     EXPECT_NE(r.err.find("warning: the welded bark is not one clean surface"), std::string::npos)
         << r.err;

@@ -177,22 +177,13 @@ void writePicture(const std::array<ViewComparison, 3>& views, const std::string&
 // mesher's ring at a branch node where the branch bends there: the hull had cut its outer
 // corner; 0.01–0.02 % within 0.19 since). They gain silhouette where junction hulls still span
 // more than the crotch:
-// - ABOP 1.27 and 1.31a: junctions over clusters of tips whose limbs were absorbed or whose
-//   nodes merged, subdivided no finer than 8 pieces per hull edge (a few tenths of a unit, the
-//   twigs are 0.04–0.1 thick), and not star-shaped from any centre tried, so some moves are
-//   halved (1.27: 4.8 % of the area, up to 5.4 radii; 5.1 % and 11.5 with one centre, and 6.9 %
-//   and 15 while one junction with 65 segments in reach stayed a hull, before session 20; 12 % as
-//   hulls at crossings before session 19, 30 % and 12 radii before the solver change; 1.31a
-//   2.0 % and 3.4 since session 21 tried more centres for its worst junction, 84 segments in
-//   reach; 2.6 % and 6.2 before, 4.1 % before session 20, 48 % and 20.5 before the solver
-//   change; since session 22, which lets triangles turn nearly edge-on to the rays and shortens
-//   failing moves only as far as needed instead of halving them, 1.27 4.0 % and 1.31a 1.2 %
-//   within 0.55 radii, where a branch axis would poke through the coarse faces).
-//   Finer subdivision makes them worse (1.27 at 16 or 32 pieces per edge: 15 radii):
-//   its worst junction makes all its moves, and its coarse faces span crotches a finer surface
-//   would have to fold into, seen from the centre, so their moves are halved. Shrinking
-//   the junctions at crossings brought 1.24a (1.6 % / 1.0 radius → 0.3 % / 0.72) and conifer
-//   (a bump beside the trunk, 11.8 radii → 0.26) within the tolerances.
+// - ABOP 1.27 and 1.31a were exceptions until session 47: junctions over clusters of tips,
+//   not star-shaped from any centre tried, so some moves were halved (1.27 4.0 % of the area
+//   and 5.4 radii, 1.31a 1.2 %, after sessions 19–22; 12 % and 30 % before). All the junctions
+//   that kept such webs there were at crossings, and since session 47 those are capped tubes
+//   when welding alone (WeldedMeshParams::tubesAtCrossings): both gain nothing now. Shrinking
+//   the junctions at crossings had brought 1.24a (1.6 % / 1.0 radius → 0.3 % / 0.72) and
+//   conifer (a bump beside the trunk, 11.8 radii → 0.26) within the tolerances before.
 // - hedge_0 and 2–4 (0.52–0.82 % of the area, within 0.73 radii): what is left of the base
 //   junctions where several main branches leave the trunk at once; before the shrinking they
 //   were one convex hull over the whole crotch (hedge_4: 2.2 % of the area, 6.9 radii;
@@ -207,8 +198,6 @@ void writePicture(const std::array<ViewComparison, 3>& views, const std::string&
 // the tube silhouette's area added up to 30 radii from it, 2.6d 90 % and 41 radii.
 const std::vector<std::pair<std::string, SilhouetteBounds>>& exceptions() {
     static const std::vector<std::pair<std::string, SilhouetteBounds>> kExceptions = {
-        {"abop_1_27", {.gainedDistance = 6.2, .gainedArea = 0.046}},
-        {"abop_1_31a", {.gainedArea = 0.014}},
         {"hedge_0", {.gainedArea = 0.0095}},
         {"hedge_2", {.gainedArea = 0.006}},
         {"hedge_3", {.gainedArea = 0.0079}},
